@@ -31,7 +31,8 @@ enum NavSource : std::uint8_t { kSrcImu = 0, kSrcDvl, kSrcDepth, kSrcHeading, kS
 constexpr std::uint32_t staleBit(NavSource s) { return 1u << (2 * static_cast<unsigned>(s)); }
 constexpr std::uint32_t rejectBit(NavSource s) { return 1u << (2 * static_cast<unsigned>(s) + 1); }
 
-// The loop's output at every tick: pose of the robot in the odometry frame (ENU, REP-105), its velocity,
+// The estimator's output at every loop tick (loop timing statistics live in LoopStats, not here, so that a
+// replay reproduces this struct bit for bit whatever the machine's speed): pose of the robot in the odometry frame (ENU, REP-105), its velocity,
 // covariances, stage and health.
 struct NavSolution {
   TimeUs t_us = 0;
@@ -46,8 +47,6 @@ struct NavSolution {
   std::uint32_t status = 0;       // NavStatusBits
   std::uint32_t faults = 0;       // staleBit()/rejectBit() per NavSource
   double image_quality = -1.0;    // last image-quality score m_I in [0, 1], -1 when none yet
-  std::uint32_t loop_overruns = 0;
-  std::uint32_t late_ticks = 0;
   std::uint32_t rejected_total = 0;
   std::uint32_t dropped_late_total = 0;
 };
