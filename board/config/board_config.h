@@ -1,0 +1,56 @@
+#pragma once
+#include <array>
+#include <string>
+#include <vector>
+
+#include "board/config/param_table.h"
+
+namespace deepnav {
+
+// Everything one vehicle's board.yaml sets. Each field is declared once, with unit, default and range,
+// in kBoardParams (board_config.cpp); the comments here only say what the group is for.
+struct BoardConfig {
+  struct Loop {
+    int rate_hz;             // nav loop tick rate
+    int budget_us;           // nav tick time budget; longer ticks count as overruns
+    int output_rate_hz;      // NavSolution publication rate
+    int vision_budget_us;    // vision worker budget per frame
+    int vision_latency_ms;   // replay: when a frame's vision result becomes available after capture
+    double late_tick_tolerance;  // a tick later than this fraction of the period counts as late
+  } loop;
+  struct Buffers {
+    int imu;                 // ring capacities, in samples
+    int dvl;
+    int heading;
+    int attitude;
+    int depth;
+    int frames;              // stereo frames in the pool
+    int vision_results;
+    int record;              // recorder queue, in records
+  } buffers;
+  struct Recording {
+    bool enabled;
+    std::string compression;  // zstd | lz4 | none
+    double chunk_max_duration_s;
+    int chunk_size_kib;
+    bool record_images;
+  } recording;
+  struct Camera {
+    int width_px;
+    int height_px;
+    int channels;
+    double rate_hz;
+  } camera;
+};
+
+// Parses and validates a board file; unknown keys, wrong types and out-of-range values fail with one
+// message naming the file, the key and the allowed range.
+bool loadBoardConfig(const std::string& path, BoardConfig* config, std::string* error);
+
+// The built-in defaults (what an empty board.yaml gives).
+BoardConfig defaultBoardConfig();
+
+// Markdown table of every board parameter (unit, default, range, meaning).
+std::string describeBoardParams();
+
+}  // namespace deepnav

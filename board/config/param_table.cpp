@@ -1,0 +1,175 @@
+#include "board/config/param_table.h"
+
+#include <cmath>
+#include <limits>
+#include <set>
+#include <sstream>
+
+#include <yaml-cpp/yaml.h>
+
+namespace deepnav {
+namespace {
+
+std::string rangeText(const ParamSpecView& p) {
+  std::ostringstream s;
+  switch (p.type) {
+    case ParamType::kBool: return "true or false";
+    case ParamType::kString: return "a string";
+    case ParamType::kChoice: s << "one of " << p.choices; return s.str();
+    case ParamType::kInt: s << "an integer in [" << p.min << ", " << p.max << "]"; return s.str();
+    case ParamType::kDouble: s << "a number in [" << p.min << ", " << p.max << "]"; return s.str();
+    case ParamType::kVec3: s << "a list of 3 numbers, each in [" << p.min << ", " << p.max << "]"; return s.str();
+  }
+  return "?";
+}
+
+bool fail(std::string* error, const std::string& file, const ParamSpecView& p, const std::string& what) {
+  if (error) {
+    *error = file + ": key '" + p.key + "' " + what + "; allowed: " + rangeText(p) + " (" + p.unit + ")";
+  }
+  return false;
+}
+
+bool parseNumber(const YAML::Node& n, double* out) {
+  if (!n.IsScalar()) return false;
+  try {
+    *out = n.as<double>();
+  } catch (const YAML::Exception&) {
+    return false;
+  }
+  return std::isfinite(*out);
+}
+
+bool inRange(const ParamSpecView& p, double v) { return v >= p.min && v <= p.max; }
+
+std::string show(const YAML::Node& n) {
+  std::ostringstream s;
+  s << n;
+  return s.str();
+}
+
+bool applyScalar(const ParamSpecView& p, const YAML::Node& n, const std::string& file, std::string* error) {
+  switch (p.type) {
+    case ParamType::kBool: {
+      bool b = false;
+      if (!n.IsScalar() || !YAML::convert<bool>::decode(n, b)) return fail(error, file, p, "is '" + show(n) + "'");
+      *static_cast<bool*>(p.target) = b;
+      return true;
+    }
+    case ParamType::kString:
+      if (!n.IsScalar()) return fail(error, file, p, "is not a string");
+      *static_cast<std::string*>(p.target) = n.Scalar();
+      return true;
+    case ParamType::kChoice: {
+      const std::string v = n.IsScalar() ? n.Scalar() : std::string();
+      std::string choices = std::string("|") + p.choices + "|";
+      if (v.empty() || choices.find("|" + v + "|") == std::string::npos) {
+        return fail(error, file, p, "is '" + show(n) + "'");
+      }
+      *static_cast<std::string*>(p.target) = v;
+      return true;
+    }
+    case ParamType::kInt: {
+      double v = 0;
+      if (!parseNumber(n, &v) || std::floor(v) != v) return fail(error, file, p, "is '" + show(n) + "'");
+      if (!inRange(p, v)) return fail(error, file, p, "is " + show(n) + ", out of range");
+      *static_cast<int*>(p.target) = static_cast<int>(v);
+      return true;
+    }
+    case ParamType::kDouble: {
+      double v = 0;
+      if (!parseNumber(n, &v)) return fail(error, file, p, "is '" + show(n) + "'");
+      if (!inRange(p, v)) return fail(error, file, p, "is " + show(n) + ", out of range");
+      *static_cast<double*>(p.target) = v;
+      return true;
+    }
+    case ParamType::kVec3: {
+      if (!n.IsSequence() || n.size() != 3) return fail(error, file, p, "is '" + show(n) + "'");
+      std::array<double, 3> v{};
+      for (std::size_t i = 0; i < 3; ++i) {
+        if (!parseNumber(n[i], &v[i]) || !inRange(p, v[i])) {
+          return fail(error, file, p, "is " + show(n) + ", element " + std::to_string(i) + " invalid");
+        }
+      }
+      *static_cast<std::array<double, 3>*>(p.target) = v;
+      return true;
+    }
+  }
+  return false;
+}
+
+// Walks every map in the document and reports the first key no parameter declares.
+bool findUnknownKey(const YAML::Node& node, const std::string& prefix, const std::set<std::string>& keys,
+                    const std::set<std::string>& sections, const std::string& file, std::string* error) {
+  for (const auto& kv : node) {
+    const std::string key = prefix.empty() ? kv.first.Scalar() : prefix + "." + kv.first.Scalar();
+    if (keys.count(key)) continue;
+    if (sections.count(key) && kv.second.IsMap()) {
+      if (!findUnknownKey(kv.second, key, keys, sections, file, error)) return false;
+      continue;
+    }
+    if (error) {
+      *error = file + ": unknown key '" + key + "'" +
+               (sections.count(key) ? " (a section: expected a map)" : "") +
+               "; run `deepnav config --list` for the declared parameters";
+    }
+    return false;
+  }
+  return true;
+}
+
+// Recursive so that no yaml-cpp Node is ever reassigned (Node::operator= rewrites the tree it refers to).
+YAML::Node lookup(const YAML::Node& node, const std::string& dotted) {
+  if (!node.IsMap()) return YAML::Node(YAML::NodeType::Undefined);
+  const std::size_t dot = dotted.find('.');
+  if (dot == std::string::npos) return node[dotted];
+  const YAML::Node child = node[dotted.substr(0, dot)];
+  if (!child.IsDefined()) return YAML::Node(YAML::NodeType::Undefined);
+  return lookup(child, dotted.substr(dot + 1));
+}
+
+}  // namespace
+
+bool applyDefaults(const std::vector<ParamSpecView>& params, std::string* error) {
+  for (const auto& p : params) {
+    if (!applyScalar(p, YAML::Load(p.default_text), "<built-in defaults>", error)) return false;
+  }
+  return true;
+}
+
+bool applyParams(const std::vector<ParamSpecView>& params, const YAML::Node& root, const std::string& file,
+                 std::string* error) {
+  if (!root.IsDefined() || root.IsNull()) return true;
+  if (!root.IsMap()) {
+    if (error) *error = file + ": expected a map of sections at the top level";
+    return false;
+  }
+  std::set<std::string> keys;
+  std::set<std::string> sections;
+  for (const auto& p : params) {
+    const std::string key = p.key;
+    keys.insert(key);
+    for (std::size_t dot = key.find('.'); dot != std::string::npos; dot = key.find('.', dot + 1)) {
+      sections.insert(key.substr(0, dot));
+    }
+  }
+  if (!findUnknownKey(root, "", keys, sections, file, error)) return false;
+  for (const auto& p : params) {
+    const YAML::Node n = lookup(root, p.key);
+    if (n.IsDefined() && !applyScalar(p, n, file, error)) return false;
+  }
+  return true;
+}
+
+std::string describeParams(const std::vector<ParamSpecView>& params) {
+  std::ostringstream s;
+  s << "| key | type | unit | default | allowed | meaning |\n|---|---|---|---|---|---|\n";
+  for (const auto& p : params) {
+    static const char* kTypes[] = {"bool", "int", "double", "string", "choice", "vec3"};
+    s << "| `" << p.key << "` | " << kTypes[static_cast<int>(p.type)] << " | " << p.unit << " | `"
+      << p.default_text << "` | " << rangeText(p) << " | " << p.doc << " |\n";
+  }
+  return s.str();
+}
+
+}  // namespace deepnav

@@ -1,0 +1,81 @@
+#include "board/config/board_config.h"
+
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+namespace deepnav {
+namespace {
+
+std::string writeTemp(const std::string& name, const std::string& text) {
+  const std::string path = ::testing::TempDir() + name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+TEST(BoardConfig, EmptyFileGivesDeclaredDefaults) {
+  const std::string path = writeTemp("empty.yaml", "");
+  BoardConfig c{};
+  std::string error;
+  ASSERT_TRUE(loadBoardConfig(path, &c, &error)) << error;
+  EXPECT_EQ(c.loop.rate_hz, 100);
+  EXPECT_EQ(c.camera.width_px, 688);
+  EXPECT_EQ(c.camera.height_px, 516);
+  EXPECT_EQ(c.recording.compression, "zstd");
+  EXPECT_TRUE(c.recording.enabled);
+}
+
+TEST(BoardConfig, ValuesOverrideDefaults) {
+  const std::string path = writeTemp("ok.yaml", "loop:\n  rate_hz: 200\nrecording:\n  compression: lz4\n");
+  BoardConfig c{};
+  std::string error;
+  ASSERT_TRUE(loadBoardConfig(path, &c, &error)) << error;
+  EXPECT_EQ(c.loop.rate_hz, 200);
+  EXPECT_EQ(c.recording.compression, "lz4");
+}
+
+struct BadCase {
+  const char* yaml;
+  const char* must_mention;
+};
+
+TEST(BoardConfig, BadInputNamesFileKeyAndAllowedRange) {
+  const BadCase cases[] = {
+      {"loop:\n  rate_hz: 5\n", "'loop.rate_hz' is 5, out of range; allowed: an integer in [10, 1000] (Hz)"},
+      {"loop:\n  rate_hz: fast\n", "'loop.rate_hz' is 'fast'"},
+      {"loop:\n  rate_hz: 100.5\n", "'loop.rate_hz'"},
+      {"loop:\n  rat_hz: 100\n", "unknown key 'loop.rat_hz'"},
+      {"lop:\n  rate_hz: 100\n", "unknown key 'lop'"},
+      {"loop: 3\n", "unknown key 'loop' (a section: expected a map)"},
+      {"recording:\n  compression: gzip\n", "one of zstd|lz4|none"},
+      {"recording:\n  enabled: maybe\n", "true or false"},
+      {"camera:\n  rate_hz: .nan\n", "'camera.rate_hz'"},
+      {"loop: [1, 2\n", "not valid YAML"},
+  };
+  for (const auto& c : cases) {
+    const std::string path = writeTemp("bad.yaml", c.yaml);
+    BoardConfig config{};
+    std::string error;
+    EXPECT_FALSE(loadBoardConfig(path, &config, &error)) << c.yaml;
+    EXPECT_NE(error.find(path), std::string::npos) << error;
+    EXPECT_NE(error.find(c.must_mention), std::string::npos) << "got: " << error;
+  }
+}
+
+TEST(BoardConfig, MissingFileIsAnError) {
+  BoardConfig c{};
+  std::string error;
+  EXPECT_FALSE(loadBoardConfig("/nonexistent/board.yaml", &c, &error));
+  EXPECT_NE(error.find("/nonexistent/board.yaml: cannot open"), std::string::npos);
+}
+
+TEST(BoardConfig, EveryParameterIsDocumented) {
+  const std::string table = describeBoardParams();
+  EXPECT_NE(table.find("`loop.rate_hz` | int | Hz | `100` | an integer in [10, 1000]"), std::string::npos)
+      << table;
+}
+
+}  // namespace
+}  // namespace deepnav
