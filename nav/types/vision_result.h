@@ -1,0 +1,22 @@
+#pragma once
+#include <cstdint>
+
+#include "nav/types/time.h"
+
+namespace deepnav {
+
+// What the vision worker reports for one stereo pair. It carries the capture time of the images and is
+// fused at that time, whatever its arrival time (vision is slow and late).
+struct VisionResult {
+  TimeUs t_us = 0;                // capture time of the stereo pair
+  std::uint64_t sequence = 0;     // frame counter of the pair
+  std::uint32_t processing_us = 0;  // worker time spent on this pair (statistics only)
+  bool frame_ok = false;          // images decoded and of the expected size
+  // MDM contrast features (Ziaei Nafchi & Cheriet 2018) of the left image, each in [0, 1].
+  double mdm_f1 = 0.0;
+  double mdm_f2 = 0.0;
+  double mdm_f3 = 0.0;
+  double image_quality = -1.0;    // the paper's m_I(t) in [0, 1]; -1 when not computed
+};
+
+}  // namespace deepnav
