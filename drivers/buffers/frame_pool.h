@@ -9,9 +9,10 @@
 namespace deepnav {
 
 // Preallocated stereo frames shared by the camera driver (producer) and the vision worker (consumer).
-// A frame is owned by exactly one side at a time: acquire() hands a free slot to the driver, which
-// fills it and passes its index through an SpscRing; the worker release()s it when done. When every
-// slot is busy, acquire() fails and the driver drops the new pair (counted), never an older one.
+// acquire() hands a free slot (one reference) to the driver, which fills it and passes its index
+// through SpscRings; each extra consumer (vision worker, recorder) takes a reference with addRef() and
+// release()s it when done. The slot is free again when its count drops to zero. When every slot is
+// busy, acquire() fails and the driver drops the new pair (counted), never an older one.
 class FramePool {
  public:
   FramePool() = default;
@@ -22,6 +23,7 @@ class FramePool {
 
   // Returns a free slot index, or -1 when the pool is exhausted.
   int acquire();
+  void addRef(int index);
   void release(int index);
 
   StereoFrame& frame(int index) { return frames_[static_cast<std::size_t>(index)]; }
@@ -31,7 +33,7 @@ class FramePool {
 
  private:
   std::unique_ptr<StereoFrame[]> frames_;
-  std::unique_ptr<std::atomic<bool>[]> busy_;
+  std::unique_ptr<std::atomic<int>[]> refs_;
   std::size_t count_ = 0;
   std::atomic<std::size_t> exhausted_{0};
 };
