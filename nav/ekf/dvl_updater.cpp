@@ -1,0 +1,37 @@
+#include "nav/ekf/dvl_updater.h"
+
+#include <cmath>
+
+#include "nav/ekf/ekf_config.h"
+#include "nav/ekf/so3.h"
+
+namespace deepnav {
+
+bool isValidDvl(const DvlSample& m) {
+  if (!m.valid || !m.v_dvl_mps.allFinite() || !m.cov_v_dvl_mps2.allFinite()) return false;
+  if (!std::isfinite(m.fom_mps) || m.fom_mps < 0.0) return false;
+  return (m.cov_v_dvl_mps2.diagonal().array() >= 0.0).all();
+}
+
+bool linearizeDvl(const FilterState& s, const DvlSample& m, const EkfConfig& c, Linearization* out) {
+  const Eigen::Matrix3d R_dvl_robot = c.q_robot_dvl.toRotationMatrix().transpose();
+  const Eigen::Matrix3d Rt = s.x.q_odom_robot.toRotationMatrix().transpose();
+  const Eigen::Vector3d& v = s.x.v_robot_in_odom_mps;
+  const Eigen::Vector3d& r = c.p_dvl_in_robot_m;
+  const Eigen::Vector3d w = s.w_robot_meas_radps - s.x.b_gyro_radps;
+  const Eigen::Vector3d v_pred = R_dvl_robot * (Rt * v + w.cross(r));
+  out->reset(3, s.dim());
+  out->residual = m.v_dvl_mps - v_pred;
+  out->H.block<3, 3>(0, es::kV) = R_dvl_robot * Rt;
+  out->H.block<3, 3>(0, es::kTheta) = R_dvl_robot * Rt * skew(v);
+  out->H.block<3, 3>(0, es::kBg) = R_dvl_robot * skew(r);
+  if (m.cov_v_dvl_mps2.diagonal().minCoeff() > 0.0) {
+    out->R = m.cov_v_dvl_mps2;
+  } else {
+    const double sigma = m.fom_mps > 0.0 ? m.fom_mps : c.dvl_sigma_mps;
+    out->R = MeasMatrix::Identity(3, 3) * (sigma * sigma);
+  }
+  return true;
+}
+
+}  // namespace deepnav

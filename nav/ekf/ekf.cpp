@@ -1,0 +1,346 @@
+#include "nav/ekf/ekf.h"
+
+#include <algorithm>
+#include <limits>
+
+#include "nav/ekf/attitude_updater.h"
+#include "nav/ekf/depth_updater.h"
+#include "nav/ekf/dvl_updater.h"
+#include "nav/ekf/heading_updater.h"
+#include "nav/ekf/imu_propagation.h"
+#include "nav/ekf/measurement_update.h"
+#include "nav/ekf/pose_updater.h"
+#include "nav/ekf/relative_pose_updater.h"
+#include "nav/ekf/stochastic_clone.h"
+
+namespace deepnav {
+namespace {
+
+UpdateOutcome refused() { return {false, std::numeric_limits<double>::infinity()}; }
+
+}  // namespace
+
+bool Ekf::init(const EkfConfig& config, std::string* error) {
+  initialised_ = false;
+  if (!validateEkfConfig(config, error)) return false;
+  if (!history_.allocate(config.history_imu_capacity) || !log_.allocate(config.history_meas_capacity)) {
+    if (error != nullptr) *error = "EkfConfig.history_imu_capacity: allocation failed";
+    return false;
+  }
+  config_ = config;
+  bounds_ = varianceBoundsFrom(config);
+  gate_dvl_ = makeGateThresholds(config.gate_dvl_sigma);
+  gate_depth_ = makeGateThresholds(config.gate_depth_sigma);
+  gate_heading_ = makeGateThresholds(config.gate_heading_sigma);
+  gate_attitude_ = makeGateThresholds(config.gate_attitude_sigma);
+  gate_pose_ = makeGateThresholds(config.gate_pose_sigma);
+  gate_relative_ = makeGateThresholds(config.gate_relative_pose_sigma);
+  health_.configure(config);
+  alignment_.clear();
+  state_ = FilterState{};
+  resetCovariance(config_, &state_);
+  counters_ = EkfCounters{};
+  aligned_ = false;
+  has_last_imu_ = false;
+  latest_input_t_us_ = 0;
+  next_seq_ = 0;
+  initialised_ = true;
+  return true;
+}
+
+bool Ekf::reset(TimeUs t_us, const EkfInitialState& initial) {
+  if (!initialised_ || !initial.x.p_robot_in_odom_m.allFinite() || !initial.x.v_robot_in_odom_mps.allFinite() ||
+      !initial.x.q_odom_robot.coeffs().allFinite() || initial.x.q_odom_robot.norm() < 1e-6 ||
+      !initial.x.b_gyro_radps.allFinite() || !initial.x.b_accel_mps2.allFinite() || !initial.P.allFinite()) {
+    return false;
+  }
+  state_.t_us = t_us;
+  state_.x = initial.x;
+  state_.x.q_odom_robot.normalize();
+  state_.has_imu = false;
+  state_.w_robot_meas_radps.setZero();
+  resetCovariance(config_, &state_);
+  if (!initial.P.isZero(0.0)) {
+    state_.P.topLeftCorner<es::kCoreDim, es::kCoreDim>() = 0.5 * (initial.P + initial.P.transpose());
+  }
+  if (!conditionCovariance(bounds_, &state_)) resetCovariance(config_, &state_);
+  ImuSample anchor;
+  anchor.t_us = t_us;
+  startHistory(anchor);
+  last_imu_t_us_ = t_us;
+  has_last_imu_ = true;
+  noteInputTime(t_us);
+  return true;
+}
+
+void Ekf::startHistory(const ImuSample& sample) {
+  history_.clear();
+  log_.clear();
+  HistoryEntry& e = history_.push();
+  e.imu = sample;
+  copyFilterState(state_, &e.state);
+  last_good_x_ = state_.x;
+  aligned_ = true;
+  health_.start(sample.t_us);
+}
+
+bool Ekf::isValidImu(const ImuSample& s) const {
+  return s.w_imu_radps.allFinite() && s.f_imu_mps2.allFinite() &&
+         s.w_imu_radps.norm() <= config_.imu_max_rate_radps && s.f_imu_mps2.norm() <= config_.imu_max_accel_mps2;
+}
+
+void Ekf::noteInputTime(TimeUs t_us) { latest_input_t_us_ = std::max(latest_input_t_us_, t_us); }
+
+void Ekf::setImu(const ImuSample& sample) {
+  if (!initialised_) return;
+  if (!isValidImu(sample) || (has_last_imu_ && sample.t_us <= last_imu_t_us_)) {
+    health_.countBadInput(kSrcImu);
+    return;
+  }
+  noteInputTime(sample.t_us);
+  if (!aligned_) {
+    alignFromImu(sample);
+    return;
+  }
+  if (sample.t_us - last_imu_t_us_ > config_.imu_max_gap_us) ++counters_.imu_gaps;
+  HistoryEntry& entry = history_.push();
+  entry.imu = sample;
+  stepImu(sample, &entry.state);
+  last_imu_t_us_ = sample.t_us;
+  health_.record(kSrcImu, FuseStatus::kQueued, FuseStatus::kAccepted, sample.t_us, 0.0);
+  counters_.history_overwrites = history_.overwrites();
+  trimHistory();
+}
+
+void Ekf::alignFromImu(const ImuSample& sample) {
+  const double dt_s = has_last_imu_ ? usToS(sample.t_us - last_imu_t_us_) : 0.0;
+  const RobotImu u = imuToRobot(sample, config_.q_robot_imu, config_.p_imu_in_robot_m, state_.w_robot_meas_radps, dt_s);
+  state_.w_robot_meas_radps = u.w_robot_radps;
+  state_.has_imu = true;
+  alignment_.addImu(u, sample.t_us);
+  last_imu_t_us_ = sample.t_us;
+  has_last_imu_ = true;
+  if (!alignment_.ready(config_.align_imu_samples)) return;
+  state_.t_us = sample.t_us;
+  state_.x = alignment_.compute(config_.p_depth_in_robot_m);
+  resetCovariance(config_, &state_);
+  startHistory(sample);
+}
+
+void Ekf::stepImu(const ImuSample& sample, FilterState* snapshot) {
+  const TimeUs t_prev = state_.t_us;
+  const double dt_s = state_.has_imu ? usToS(sample.t_us - t_prev) : 0.0;
+  const RobotImu u = imuToRobot(sample, config_.q_robot_imu, config_.p_imu_in_robot_m, state_.w_robot_meas_radps, dt_s);
+  state_.w_robot_meas_radps = u.w_robot_radps;
+  state_.has_imu = true;
+  // Measurements strictly inside (t_prev, t_k): propagate to each, fuse it.
+  for (int i = log_.firstAfter(t_prev); i < log_.size() && log_.at(i).t_us < sample.t_us; ++i) {
+    propagateTo(log_.at(i).t_us, u);
+    applyMeasurement(log_.at(i));
+  }
+  propagateTo(sample.t_us, u);
+  copyFilterState(state_, snapshot);
+  for (int i = log_.firstAtOrAfter(sample.t_us); i < log_.size() && log_.at(i).t_us == sample.t_us; ++i) {
+    applyMeasurement(log_.at(i));
+  }
+}
+
+void Ekf::propagateTo(TimeUs t_us, const RobotImu& u) {
+  const double dt_s = usToS(t_us - state_.t_us);
+  if (dt_s <= 0.0) return;
+  const CoreMatrix Phi = propagationJacobian(state_.x, u, dt_s);
+  state_.x = propagateNominal(state_.x, u, dt_s, config_.gravity_mps2);
+  propagateCovariance(Phi, propagationNoise(config_, dt_s), &state_);
+  state_.t_us = t_us;
+  finishStep();
+}
+
+void Ekf::finishStep() {
+  if (conditionCovariance(bounds_, &state_) && isFiniteState(state_)) {
+    last_good_x_ = state_.x;
+    return;
+  }
+  // Something went non-finite or lost positive definiteness: keep the last sane nominal state, restart
+  // the covariance (clones cannot be trusted any more and are dropped).
+  ++counters_.numeric_resets;
+  state_.x = last_good_x_;
+  resetCovariance(config_, &state_);
+}
+
+NavSource Ekf::sourceOf(const MeasurementPayload& p) const {
+  switch (p.index()) {
+    case 0: return kSrcDvl;
+    case 1: return kSrcDepth;
+    case 2: return kSrcHeading;
+    case 3: return kSrcAttitude;
+    case 4: return std::get_if<PoseMeasurement>(&p)->source;
+    case 5: return std::get_if<RelativePoseMeasurement>(&p)->source;
+    default: return kSrcCount;  // clone bookkeeping has no health slot
+  }
+}
+
+UpdateOutcome Ekf::applyPayload(const MeasurementPayload& p) {
+  Linearization lin;
+  if (const auto* m = std::get_if<DvlSample>(&p)) {
+    return linearizeDvl(state_, *m, config_, &lin) ? gateAndUpdate(lin, gate_dvl_, &state_) : refused();
+  }
+  if (const auto* m = std::get_if<DepthSample>(&p)) {
+    return linearizeDepth(state_, *m, config_, &lin) ? gateAndUpdate(lin, gate_depth_, &state_) : refused();
+  }
+  if (const auto* m = std::get_if<HeadingSample>(&p)) {
+    return linearizeHeading(state_, *m, config_, &lin) ? gateAndUpdate(lin, gate_heading_, &state_) : refused();
+  }
+  if (const auto* m = std::get_if<AttitudeSample>(&p)) {
+    return linearizeAttitude(state_, *m, config_, &lin) ? gateAndUpdate(lin, gate_attitude_, &state_) : refused();
+  }
+  if (const auto* m = std::get_if<PoseMeasurement>(&p)) {
+    return linearizePose(state_, *m, &lin) ? gateAndUpdate(lin, gate_pose_, &state_) : refused();
+  }
+  if (const auto* m = std::get_if<RelativePoseMeasurement>(&p)) return applyRelativePose(*m);
+  if (const auto* m = std::get_if<CloneRequest>(&p)) {
+    return {augmentClone(m->id, config_.max_clones, &state_) == CloneStatus::kOk, 0.0};
+  }
+  if (const auto* m = std::get_if<CloneRelease>(&p)) {
+    return {marginaliseClone(m->id, &state_) == CloneStatus::kOk, 0.0};
+  }
+  return refused();
+}
+
+UpdateOutcome Ekf::applyRelativePose(const RelativePoseMeasurement& m) {
+  Linearization lin;
+  const UpdateOutcome out =
+      linearizeRelativePose(state_, m, &lin) ? gateAndUpdate(lin, gate_relative_, &state_) : refused();
+  if (m.release_clone) marginaliseClone(m.clone_id, &state_);
+  return out;
+}
+
+void Ekf::applyMeasurement(LoggedMeasurement& e) {
+  const FuseStatus previous = e.outcome;
+  const UpdateOutcome r = applyPayload(e.payload);
+  finishStep();
+  e.outcome = r.accepted ? FuseStatus::kAccepted : FuseStatus::kRejected;
+  e.test_ratio = r.test_ratio;
+  const NavSource src = sourceOf(e.payload);
+  if (src != kSrcCount) {
+    health_.record(src, previous, e.outcome, e.t_us, e.test_ratio);
+  } else if ((previous == FuseStatus::kRejected) != (e.outcome == FuseStatus::kRejected)) {
+    e.outcome == FuseStatus::kRejected ? ++counters_.clone_failures : --counters_.clone_failures;
+  }
+}
+
+LoggedMeasurement Ekf::makeLogged(TimeUs t_us, const MeasurementPayload& payload) {
+  LoggedMeasurement e;
+  e.t_us = t_us;
+  e.seq = next_seq_++;
+  e.payload = payload;
+  return e;
+}
+
+FuseResult Ekf::submit(const LoggedMeasurement& e, NavSource src, bool valid) {
+  if (!initialised_) return {FuseStatus::kNotAligned, 0.0};
+  if (!valid) {
+    if (src != kSrcCount) health_.countBadInput(src);
+    return {FuseStatus::kBadInput, 0.0};
+  }
+  noteInputTime(e.t_us);
+  if (!aligned_) return {FuseStatus::kNotAligned, 0.0};
+  if (e.t_us > state_.t_us) {
+    int index = -1;
+    if (insertWithEviction(e, &index)) return {FuseStatus::kQueued, 0.0};
+    if (src != kSrcCount) health_.countDroppedLate(src);
+    return {FuseStatus::kDroppedLate, 0.0};
+  }
+  return fuseLate(e, src);
+}
+
+FuseResult Ekf::fuseLate(const LoggedMeasurement& e, NavSource src) {
+  const FuseResult dropped{FuseStatus::kDroppedLate, 0.0};
+  const bool too_old = e.t_us < state_.t_us - config_.max_delay_us;
+  int index = -1;
+  if (too_old || history_.empty() || e.t_us < history_.timeAt(0) || !insertWithEviction(e, &index)) {
+    if (src != kSrcCount) health_.countDroppedLate(src);
+    return dropped;
+  }
+  const int base = history_.latestAtOrBefore(e.t_us);
+  if (base < 0) {  // the eviction above took the snapshot away; the entry is trimmed with the window
+    log_.at(index).outcome = FuseStatus::kDroppedLate;
+    if (src != kSrcCount) health_.countDroppedLate(src);
+    return dropped;
+  }
+  ++counters_.replays;
+  replayFrom(base);
+  return {log_.at(index).outcome, log_.at(index).test_ratio};
+}
+
+bool Ekf::insertWithEviction(const LoggedMeasurement& e, int* index) {
+  if (log_.full()) {
+    const TimeUs t_old = log_.at(0).t_us;
+    if (t_old > state_.t_us || t_old > e.t_us) return false;  // only queued or newer entries: keep them
+    log_.popOldest();
+    ++counters_.history_overflows;
+    // A snapshot at or before the evicted measurement would replay without it: unusable now.
+    while (!history_.empty() && history_.timeAt(0) <= t_old) history_.popOldest();
+  }
+  *index = log_.insert(e);
+  return *index >= 0;
+}
+
+void Ekf::replayFrom(int history_index) {
+  HistoryEntry& base = history_.at(history_index);
+  copyFilterState(base.state, &state_);
+  last_good_x_ = state_.x;
+  const TimeUs t0 = base.imu.t_us;
+  for (int i = log_.firstAtOrAfter(t0); i < log_.size() && log_.at(i).t_us == t0; ++i) {
+    applyMeasurement(log_.at(i));
+  }
+  for (int k = history_index + 1; k < history_.size(); ++k) {
+    HistoryEntry& h = history_.at(k);
+    stepImu(h.imu, &h.state);
+  }
+}
+
+void Ekf::trimHistory() {
+  const TimeUs horizon = state_.t_us - config_.max_delay_us;
+  while (history_.size() > 1 && history_.timeAt(1) <= horizon) history_.popOldest();
+  if (history_.empty()) return;
+  const TimeUs oldest = history_.timeAt(0);
+  while (log_.size() > 0 && log_.at(0).t_us < oldest) log_.popOldest();
+}
+
+FuseResult Ekf::fuseDvl(const DvlSample& m) { return submit(makeLogged(m.t_us, m), kSrcDvl, isValidDvl(m)); }
+
+FuseResult Ekf::fuseDepth(const DepthSample& m) {
+  const bool valid = isValidDepth(m);
+  if (initialised_ && valid && !aligned_) alignment_.setDepth(m.depth_m);
+  return submit(makeLogged(m.t_us, m), kSrcDepth, valid);
+}
+
+FuseResult Ekf::fuseHeading(const HeadingSample& m) {
+  const bool valid = isValidHeading(m);
+  if (initialised_ && valid && !aligned_) alignment_.setYaw(yawFromHeading(m, config_));
+  return submit(makeLogged(m.t_us, m), kSrcHeading, valid);
+}
+
+FuseResult Ekf::fuseAttitude(const AttitudeSample& m) {
+  return submit(makeLogged(m.t_us, m), kSrcAttitude, isValidAttitude(m));
+}
+
+FuseResult Ekf::fusePose(const PoseMeasurement& m) {
+  const bool valid = isValidPose(m) && m.source < kSrcCount;
+  return submit(makeLogged(m.t_us, m), m.source < kSrcCount ? m.source : kSrcMarkers, valid);
+}
+
+FuseResult Ekf::fuseRelativePose(const RelativePoseMeasurement& m) {
+  const bool valid = isValidRelativePose(m) && m.source < kSrcCount;
+  return submit(makeLogged(m.t_us, m), m.source < kSrcCount ? m.source : kSrcVoOrb, valid);
+}
+
+FuseResult Ekf::clonePose(TimeUs t_us, std::uint32_t id) {
+  return submit(makeLogged(t_us, CloneRequest{t_us, id}), kSrcCount, true);
+}
+
+FuseResult Ekf::releaseClone(TimeUs t_us, std::uint32_t id) {
+  return submit(makeLogged(t_us, CloneRelease{t_us, id}), kSrcCount, true);
+}
+
+}  // namespace deepnav

@@ -1,0 +1,100 @@
+#pragma once
+#include <cstdint>
+#include <string>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "nav/types/time.h"
+
+namespace deepnav {
+
+// Every parameter of the error-state EKF, with its unit in its name and its default here (the one place
+// it is declared). Frames: odometry O is ENU (z up), robot R is FLU. validateEkfConfig() checks ranges.
+struct EkfConfig {
+  // --- Physics --------------------------------------------------------------------------------------
+  double gravity_mps2 = 9.80665;  // magnitude of gravity along -z of odom, (0, 20]
+
+  // --- Mounting (board geometry) ----------------------------------------------------------------------
+  Eigen::Quaterniond q_robot_imu = Eigen::Quaterniond::Identity();  // rotation IMU -> robot
+  Eigen::Vector3d p_imu_in_robot_m = Eigen::Vector3d::Zero();       // IMU lever arm, robot frame
+  Eigen::Quaterniond q_robot_dvl = Eigen::Quaterniond::Identity();  // rotation DVL -> robot
+  Eigen::Vector3d p_dvl_in_robot_m = Eigen::Vector3d::Zero();       // DVL lever arm, robot frame
+  Eigen::Vector3d p_depth_in_robot_m = Eigen::Vector3d::Zero();     // pressure port, robot frame
+
+  // --- IMU noise (continuous-time densities) ------------------------------------------------------------
+  double gyro_arw_radps_rthz = 1.0e-4;        // angle random walk, rad/s/sqrt(Hz), > 0
+  double accel_vrw_mps2_rthz = 1.0e-3;        // velocity random walk, m/s^2/sqrt(Hz), > 0
+  double gyro_bias_rw_radps2_rthz = 1.0e-5;   // gyro bias random walk, rad/s^2/sqrt(Hz), >= 0
+  double accel_bias_rw_mps3_rthz = 1.0e-4;    // accel bias random walk, m/s^3/sqrt(Hz), >= 0
+
+  // --- IMU input sanity -----------------------------------------------------------------------------
+  double imu_max_rate_radps = 35.0;     // |w| above this is bad input (2000 deg/s)
+  double imu_max_accel_mps2 = 160.0;    // |f| above this is bad input (16 g)
+  TimeUs imu_max_gap_us = 100'000;      // a longer IMU gap is still propagated but counted
+
+  // --- Initial uncertainty (1-sigma) ---------------------------------------------------------------------
+  double init_pos_sigma_m = 0.1;               // x, y (and z before the depth correction)
+  double init_vel_sigma_mps = 0.1;
+  double init_roll_pitch_sigma_rad = 0.02;
+  double init_yaw_sigma_rad = 0.1;
+  double init_gyro_bias_sigma_radps = 1.0e-3;
+  double init_accel_bias_sigma_mps2 = 0.05;
+
+  // --- Variance bounds, applied after every step (max keeps the filter responsive, min keeps P PD) ---
+  double pos_var_min_m2 = 1.0e-12;
+  double pos_var_max_m2 = 1.0e6;
+  double vel_var_min_m2ps2 = 1.0e-12;
+  double vel_var_max_m2ps2 = 1.0e4;
+  double angle_var_min_rad2 = 1.0e-14;
+  double angle_var_max_rad2 = 10.0;
+  double gyro_bias_var_min_rad2ps2 = 1.0e-16;
+  double gyro_bias_var_max_rad2ps2 = 1.0e-2;
+  double accel_bias_var_min_m2ps4 = 1.0e-14;
+  double accel_bias_var_max_m2ps4 = 1.0;
+
+  // --- Measurement defaults (used when a sample carries sigma 0 / covariance 0) -------------------------
+  double dvl_sigma_mps = 0.01;           // per axis, when the sample has neither covariance nor FOM
+  double depth_sigma_m = 0.05;
+  double heading_sigma_rad = 0.035;      // about 2 deg
+  double attitude_sigma_rad = 0.0087;    // about 0.5 deg, roll and pitch
+
+  // --- Compass -----------------------------------------------------------------------------------------
+  double magnetic_declination_rad = 0.0;  // true = magnetic + declination (east positive)
+  double heading_bias_rad = 0.0;          // measured = true + bias; subtracted before fusion
+
+  // --- Innovation gates, in sigma: ratio = innov^2 / (gate^2 S) for one dof; for n dof see
+  //     innovation_gate.h (chi-square quantile of the same tail probability + per-axis test) ---------
+  double gate_dvl_sigma = 3.0;
+  double gate_depth_sigma = 3.0;
+  double gate_heading_sigma = 3.0;
+  double gate_attitude_sigma = 3.0;
+  double gate_pose_sigma = 3.0;
+  double gate_relative_pose_sigma = 3.0;
+
+  // --- Timeouts: a source with no accepted sample for this long is stale; 0 = not monitored ----------
+  TimeUs timeout_imu_us = 50'000;
+  TimeUs timeout_dvl_us = 1'000'000;
+  TimeUs timeout_depth_us = 1'000'000;
+  TimeUs timeout_heading_us = 1'000'000;
+  TimeUs timeout_attitude_us = 1'000'000;
+  TimeUs timeout_markers_us = 0;   // markers are seen only near the panel
+  TimeUs timeout_vo_us = 0;        // both VO sources (ORB and planes)
+  TimeUs position_aided_timeout_us = 2'000'000;  // kStatusPositionValid while a pose/VO fused this recently
+
+  // --- Delayed fusion -----------------------------------------------------------------------------------
+  TimeUs max_delay_us = 500'000;       // measurements older than now - this are dropped and counted
+  int history_imu_capacity = 160;      // snapshots kept; must cover max_delay at the IMU rate (+2)
+  int history_meas_capacity = 128;     // measurements kept for re-fusion inside the window
+
+  // --- Stochastic clones -------------------------------------------------------------------------------
+  int max_clones = 4;                  // [1, es::kMaxClones]
+
+  // --- Initial alignment ----------------------------------------------------------------------------
+  int align_imu_samples = 20;          // IMU samples averaged for roll/pitch from gravity, >= 1
+};
+
+// Checks every field; on failure writes a message naming the key and returns false.
+bool validateEkfConfig(const EkfConfig& config, std::string* error);
+
+}  // namespace deepnav

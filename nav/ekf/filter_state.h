@@ -1,0 +1,61 @@
+#pragma once
+#include <array>
+#include <cstdint>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "nav/ekf/error_state.h"
+#include "nav/types/time.h"
+
+namespace deepnav {
+
+// Nominal (best-estimate) state of the robot in the odometry frame (ENU, REP-105). Biases are expressed
+// in the robot frame (FLU), i.e. after the IMU mounting rotation.
+struct NominalState {
+  Eigen::Vector3d p_robot_in_odom_m = Eigen::Vector3d::Zero();
+  Eigen::Vector3d v_robot_in_odom_mps = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond q_odom_robot = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d b_gyro_radps = Eigen::Vector3d::Zero();
+  Eigen::Vector3d b_accel_mps2 = Eigen::Vector3d::Zero();
+};
+
+// A stochastic clone: the pose of the robot at an earlier time (an image capture), kept in the state so
+// that a relative measurement between that time and a later one can be fused (Roumeliotis & Burdick,
+// "Stochastic cloning", ICRA 2002).
+struct PoseClone {
+  std::uint32_t id = 0;
+  TimeUs t_us = 0;
+  Eigen::Vector3d p_robot_in_odom_m = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond q_odom_robot = Eigen::Quaterniond::Identity();
+};
+
+// Everything the filter needs to continue from a given time: what the state history snapshots.
+struct FilterState {
+  TimeUs t_us = 0;
+  NominalState x;
+  std::array<PoseClone, es::kMaxClones> clones{};
+  int n_clones = 0;
+  // Last IMU sample in the robot frame, raw (not bias corrected): the rate is needed by the DVL lever arm
+  // and by the next step's angular acceleration.
+  Eigen::Vector3d w_robot_meas_radps = Eigen::Vector3d::Zero();
+  bool has_imu = false;
+  CovMatrix P = CovMatrix::Zero();  // only the top-left dim() x dim() block is meaningful
+
+  int dim() const { return es::kCoreDim + es::kCloneDim * n_clones; }
+};
+
+// Copies src into dst, the covariance only over its used block (a full copy is 12 kB).
+void copyFilterState(const FilterState& src, FilterState* dst);
+
+// Applies an error-state correction to the nominal state (the retraction):
+//   p += dp, v += dv, R = Exp(dtheta) R, bg += dbg, ba += dba, and likewise for each clone.
+void injectErrorState(const ErrorVector& dx, FilterState* s);
+
+// Same retraction for the core state only, as used by the Jacobian tests.
+NominalState retractNominal(const NominalState& x, const Eigen::Matrix<double, es::kCoreDim, 1>& dx);
+
+// True when every nominal number and the used covariance block are finite.
+bool isFiniteState(const FilterState& s);
+
+}  // namespace deepnav

@@ -1,0 +1,22 @@
+#pragma once
+#include "nav/ekf/ekf_measurements.h"
+#include "nav/ekf/filter_state.h"
+#include "nav/ekf/measurement_update.h"
+
+namespace deepnav {
+
+// Finite, unit-norm quaternion; the used covariance block finite, symmetric, positive definite.
+bool isValidRelativePose(const RelativePoseMeasurement& m);
+
+// Index of the clone with this id among s.clones[0, n_clones), or -1.
+int findCloneSlot(const FilterState& s, std::uint32_t clone_id);
+
+// Relative pose between clone a (slot) and the current state b:
+//   rotation:    r = Log(R_b^T R_a R_m)     ~= r0 + Jl^-1(r0) R_b^T (dtheta_a - dtheta_b)
+//   translation: r = p_m - R_a^T (p_b - p_a), d = p_b - p_a,
+//                R_a^T d ~= R_a^T d + R_a^T (dp_b - dp_a) + R_a^T [d]x dtheta_a
+// so H_theta_a = -Jl^-1 R_b^T, H_theta_b = Jl^-1 R_b^T, H_p_a = -R_a^T, H_p_b = R_a^T,
+// H_theta_a(transl) = R_a^T [d]x. Rows: [translation (if any); rotation]. False when the clone is unknown.
+bool linearizeRelativePose(const FilterState& s, const RelativePoseMeasurement& m, Linearization* out);
+
+}  // namespace deepnav
