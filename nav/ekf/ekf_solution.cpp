@@ -8,11 +8,8 @@ namespace deepnav {
 std::uint32_t Ekf::statusBits(TimeUs now_us) const {
   if (!aligned_) return 0;
   std::uint32_t bits = kStatusAttitudeValid;
-  const auto fresh = [&](NavSource src) {
-    return health_.source(src).last_accepted_t_us >= 0 && !health_.isStale(src, now_us);
-  };
-  if (fresh(kSrcDvl)) bits |= kStatusVelocityValid;
-  if (fresh(kSrcDepth)) bits |= kStatusDepthValid;
+  if (health_.acceptedWithin(kSrcDvl, now_us, config_.timeout_dvl_us)) bits |= kStatusVelocityValid;
+  if (health_.acceptedWithin(kSrcDepth, now_us, config_.timeout_depth_us)) bits |= kStatusDepthValid;
   const TimeUs window = config_.position_aided_timeout_us;
   if (health_.acceptedWithin(kSrcMarkers, now_us, window) || health_.acceptedWithin(kSrcVoOrb, now_us, window) ||
       health_.acceptedWithin(kSrcVoPlanes, now_us, window)) {

@@ -32,6 +32,7 @@ void SourceHealthMonitor::record(NavSource src, FuseStatus previous, FuseStatus 
     h.last_accepted_t_us = std::max(h.last_accepted_t_us, t_us);
   }
   if (now == FuseStatus::kRejected) ++h.counters.rejected;
+  h.last_seen_t_us = std::max(h.last_seen_t_us, t_us);
   h.last_rejected = now == FuseStatus::kRejected;
   h.last_test_ratio = test_ratio;
 }
@@ -39,7 +40,7 @@ void SourceHealthMonitor::record(NavSource src, FuseStatus previous, FuseStatus 
 bool SourceHealthMonitor::isStale(NavSource src, TimeUs now_us) const {
   const TimeUs timeout = timeout_us_[static_cast<std::size_t>(src)];
   if (timeout <= 0) return false;
-  const TimeUs last = std::max(source(src).last_accepted_t_us, start_us_);
+  const TimeUs last = std::max(source(src).last_seen_t_us, start_us_);
   return now_us - last > timeout;
 }
 

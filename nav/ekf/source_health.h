@@ -20,12 +20,14 @@ struct SourceCounters {
 struct SourceHealth {
   SourceCounters counters;
   TimeUs last_accepted_t_us = -1;  // -1: never
+  TimeUs last_seen_t_us = -1;      // latest valid sample that reached the gate (accepted or rejected)
   bool last_rejected = false;      // outcome of the latest (in capture time) fused sample
   double last_test_ratio = 0.0;
 };
 
 // Per-source counters, stale and reject flags (PX4 ekf2 style). A source is stale when its timeout is
-// non-zero and it had no accepted sample for longer than the timeout (counted from start() if never).
+// non-zero and no valid sample reached the gate for longer than the timeout (counted from start() if
+// never): stale means "no data"; data that arrives but fails the gate raises the reject flag instead.
 // Outcomes can be revised when a late measurement forces re-fusion: record() undoes the previous
 // outcome of that sample, so the counters always describe the current estimate.
 class SourceHealthMonitor {
