@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <string>
 
+#include "nav/types/loop_stats.h"
 #include "nav/types/time.h"
 
 namespace deepnav {
@@ -22,20 +23,6 @@ struct TaskStats {
   std::atomic<std::uint64_t> overruns{0};
   std::atomic<std::int64_t> max_us{0};
   std::atomic<std::int64_t> total_us{0};
-};
-
-// A plain copy of the statistics for reports and outputs.
-struct LoopStats {
-  static constexpr int kMaxTasks = 8;
-  int task_count = 0;
-  std::array<const char*, kMaxTasks> names{};
-  std::array<std::uint64_t, kMaxTasks> runs{};
-  std::array<std::uint64_t, kMaxTasks> overruns{};
-  std::array<std::int64_t, kMaxTasks> max_us{};
-  std::array<double, kMaxTasks> mean_us{};
-  std::uint64_t ticks = 0;
-  std::uint64_t late_ticks = 0;
-  std::int64_t max_lateness_us = 0;
 };
 
 // Fixed-rate scheduler: the base tick runs at the fastest rate in the table; every other loop task

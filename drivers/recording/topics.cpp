@@ -1,0 +1,100 @@
+#include "drivers/recording/topics.h"
+
+#include <array>
+#include <string>
+
+#include "drivers/cdr/ros2msg_definitions.h"
+
+namespace deepnav {
+namespace {
+
+constexpr std::array<TopicInfo, kTopicCount> kTopics = {{
+    {"/imu", "sensor_msgs/msg/Imu", "imu"},
+    {"/dvl", "geometry_msgs/msg/TwistWithCovarianceStamped", "dvl"},
+    {"/dvl/bottom_track", "deepnav_msgs/msg/DvlBottomTrack", "dvl"},
+    {"/pressure", "sensor_msgs/msg/FluidPressure", "pressure"},
+    {"/depth", "deepnav_msgs/msg/Depth", "pressure"},
+    {"/heading", "deepnav_msgs/msg/Heading", "compass"},
+    {"/attitude", "deepnav_msgs/msg/Attitude", "ahrs"},
+    {"/vision/result", "deepnav_msgs/msg/VisionResult", "camera_left"},
+    {"/camera/stereo_info", "deepnav_msgs/msg/StereoInfo", "camera_left"},
+    {"/camera/left/image_raw", "sensor_msgs/msg/Image", "camera_left"},
+    {"/camera/right/image_raw", "sensor_msgs/msg/Image", "camera_right"},
+    {"/nav/odometry", "nav_msgs/msg/Odometry", "odom"},
+    {"/nav/solution", "deepnav_msgs/msg/NavSolution", "odom"},
+    {"/nav/loop_stats", "deepnav_msgs/msg/LoopStats", ""},
+    {"/truth/odometry", "nav_msgs/msg/Odometry", "odom"},
+}};
+
+// The project's own messages. Units in comments, frames as in the README.
+const ros::MsgDefinitions& projectDefinitions() {
+  static const ros::MsgDefinitions kDefs = {
+      {"deepnav_msgs/DvlBottomTrack",
+       "std_msgs/Header header\n"
+       "geometry_msgs/Vector3 velocity # m/s, DVL over the bottom, DVL frame\n"
+       "float64[9] velocity_covariance # m^2/s^2, row-major\n"
+       "float64[4] beam_range # m, slant range per beam\n"
+       "uint8 beam_valid_mask # bit i: beam i locked\n"
+       "bool valid # velocity usable\n"
+       "float64 figure_of_merit # m/s\n"
+       "float64 altitude # m\n"},
+      {"deepnav_msgs/Depth",
+       "std_msgs/Header header\nfloat64 depth # m, positive down\nfloat64 pressure # Pa, absolute\n"
+       "float64 sigma # m, 0 = filter default\n"},
+      {"deepnav_msgs/Heading",
+       "std_msgs/Header header\nfloat64 heading # rad, clockwise from north\n"
+       "bool is_true # true north (else magnetic)\nfloat64 sigma # rad, 0 = filter default\n"},
+      {"deepnav_msgs/Attitude",
+       "std_msgs/Header header\nfloat64 roll # rad, FLU\nfloat64 pitch # rad, FLU\n"
+       "float64 sigma # rad, 0 = filter default\n"},
+      {"deepnav_msgs/VisionResult",
+       "std_msgs/Header header # stamp = capture time of the pair\nuint64 sequence\n"
+       "uint32 processing_us\nbool frame_ok\nfloat64 mdm_f1\nfloat64 mdm_f2\nfloat64 mdm_f3\n"
+       "float64 image_quality # [0, 1], -1 = none\n"},
+      {"deepnav_msgs/StereoInfo",
+       "std_msgs/Header header # stamp = capture time (mid-exposure)\nuint32 exposure_us\n"
+       "uint64 sequence\nbool rectified\n"},
+      {"deepnav_msgs/NavSolution",
+       "std_msgs/Header header # frame odom (ENU)\n"
+       "geometry_msgs/Point position # m, robot in odom\n"
+       "geometry_msgs/Quaternion orientation # robot (FLU) to odom\n"
+       "geometry_msgs/Vector3 velocity # m/s, in odom\n"
+       "geometry_msgs/Vector3 angular_velocity # rad/s, robot frame\n"
+       "float64[36] pose_covariance # x y z roll pitch yaw (about odom axes)\n"
+       "float64[9] velocity_covariance # m^2/s^2\n"
+       "uint8 stage # 0 init, 1 workspace definition, 2 optimised localisation\n"
+       "uint32 status # NavStatusBits\nuint32 faults # stale/rejected bit pairs per source\n"
+       "float64 image_quality\nuint32 rejected_total\nuint32 dropped_late_total\n"},
+      {"deepnav_msgs/LoopStats",
+       "std_msgs/Header header\nstring[] task_names\nuint64[] runs\nuint64[] overruns\n"
+       "float64[] mean_us\nint64[] max_us\nuint64 ticks\nuint64 late_ticks\nint64 max_lateness_us\n"},
+  };
+  return kDefs;
+}
+
+std::array<std::string, kTopicCount> buildSchemas() {
+  std::array<std::string, kTopicCount> out;
+  for (std::size_t i = 0; i < kTopicCount; ++i) {
+    std::string error;
+    ros::ros2MsgDefinition(kTopics[i].type, projectDefinitions(), &out[i], &error);
+  }
+  return out;
+}
+
+}  // namespace
+
+const TopicInfo& topicInfo(Topic topic) { return kTopics[static_cast<std::size_t>(topic)]; }
+
+Topic topicByName(std::string_view name) {
+  for (std::size_t i = 0; i < kTopicCount; ++i) {
+    if (kTopics[i].name == name) return static_cast<Topic>(i);
+  }
+  return Topic::kCount;
+}
+
+std::string_view topicSchema(Topic topic) {
+  static const std::array<std::string, kTopicCount> kSchemas = buildSchemas();
+  return kSchemas[static_cast<std::size_t>(topic)];
+}
+
+}  // namespace deepnav
