@@ -8,7 +8,6 @@ namespace deepnav {
 namespace {
 
 using P = ParamSpec<BoardConfig>;
-constexpr double kBig = 1e9;
 
 #define DEEPNAV_FIELD(expr) [](BoardConfig& c) -> void* { return &c.expr; }
 
@@ -63,6 +62,74 @@ const std::array kBoardParams = {
       DEEPNAV_FIELD(camera.channels)},
     P{"camera.rate_hz", ParamType::kDouble, "Hz", 0.1, 100, "10", "", "stereo pair rate",
       DEEPNAV_FIELD(camera.rate_hz)},
+    P{"ekf.gravity_mps2", ParamType::kDouble, "m/s^2", 9.7, 9.9, "9.80665", "", "local gravity magnitude",
+      DEEPNAV_FIELD(ekf.gravity_mps2)},
+    P{"ekf.imu_rotation_deg", ParamType::kRotation, "deg", -180, 180, "[0, 0, 0]", "", "mounting rotation IMU -> robot, [roll, pitch, yaw]",
+      DEEPNAV_FIELD(ekf.q_robot_imu)},
+    P{"ekf.p_imu_in_robot_m", ParamType::kVec3, "m", -10, 10, "[0, 0, 0]", "", "IMU lever arm in the robot frame (FLU)",
+      DEEPNAV_FIELD(ekf.p_imu_in_robot_m)},
+    P{"ekf.dvl_rotation_deg", ParamType::kRotation, "deg", -180, 180, "[0, 0, 0]", "", "mounting rotation DVL -> robot, [roll, pitch, yaw]",
+      DEEPNAV_FIELD(ekf.q_robot_dvl)},
+    P{"ekf.p_dvl_in_robot_m", ParamType::kVec3, "m", -10, 10, "[0, 0, 0]", "", "DVL lever arm in the robot frame",
+      DEEPNAV_FIELD(ekf.p_dvl_in_robot_m)},
+    P{"ekf.p_depth_in_robot_m", ParamType::kVec3, "m", -10, 10, "[0, 0, 0]", "", "pressure port position in the robot frame",
+      DEEPNAV_FIELD(ekf.p_depth_in_robot_m)},
+    P{"ekf.gyro_arw_radps_rthz", ParamType::kDouble, "rad/s/sqrt(Hz)", 1e-07, 1, "1.0e-4", "", "gyro angle random walk",
+      DEEPNAV_FIELD(ekf.gyro_arw_radps_rthz)},
+    P{"ekf.accel_vrw_mps2_rthz", ParamType::kDouble, "m/s^2/sqrt(Hz)", 1e-06, 10, "1.0e-3", "", "accelerometer velocity random walk",
+      DEEPNAV_FIELD(ekf.accel_vrw_mps2_rthz)},
+    P{"ekf.gyro_bias_rw_radps2_rthz", ParamType::kDouble, "rad/s^2/sqrt(Hz)", 0, 1, "1.0e-5", "", "gyro bias random walk",
+      DEEPNAV_FIELD(ekf.gyro_bias_rw_radps2_rthz)},
+    P{"ekf.accel_bias_rw_mps3_rthz", ParamType::kDouble, "m/s^3/sqrt(Hz)", 0, 10, "1.0e-4", "", "accelerometer bias random walk",
+      DEEPNAV_FIELD(ekf.accel_bias_rw_mps3_rthz)},
+    P{"ekf.init_pos_sigma_m", ParamType::kDouble, "m", 0.0001, 10000.0, "0.1", "", "initial position 1-sigma",
+      DEEPNAV_FIELD(ekf.init_pos_sigma_m)},
+    P{"ekf.init_vel_sigma_mps", ParamType::kDouble, "m/s", 0.0001, 100, "0.1", "", "initial velocity 1-sigma",
+      DEEPNAV_FIELD(ekf.init_vel_sigma_mps)},
+    P{"ekf.init_yaw_sigma_rad", ParamType::kDouble, "rad", 0.0001, 3.5, "0.1", "", "initial yaw 1-sigma (after the first heading)",
+      DEEPNAV_FIELD(ekf.init_yaw_sigma_rad)},
+    P{"ekf.dvl_sigma_mps", ParamType::kDouble, "m/s", 1e-05, 1, "0.01", "", "DVL velocity 1-sigma per axis when the sample carries none",
+      DEEPNAV_FIELD(ekf.dvl_sigma_mps)},
+    P{"ekf.depth_sigma_m", ParamType::kDouble, "m", 0.0001, 10, "0.05", "", "depth 1-sigma when the sample carries none",
+      DEEPNAV_FIELD(ekf.depth_sigma_m)},
+    P{"ekf.heading_sigma_rad", ParamType::kDouble, "rad", 0.0001, 1, "0.035", "", "compass heading 1-sigma when the sample carries none",
+      DEEPNAV_FIELD(ekf.heading_sigma_rad)},
+    P{"ekf.attitude_sigma_rad", ParamType::kDouble, "rad", 1e-05, 1, "0.0087", "", "AHRS roll/pitch 1-sigma when the sample carries none",
+      DEEPNAV_FIELD(ekf.attitude_sigma_rad)},
+    P{"ekf.magnetic_declination_rad", ParamType::kDouble, "rad", -3.15, 3.15, "0.0", "", "true = magnetic + declination (east positive)",
+      DEEPNAV_FIELD(ekf.magnetic_declination_rad)},
+    P{"ekf.heading_bias_rad", ParamType::kDouble, "rad", -3.15, 3.15, "0.0", "", "compass bias (measured = true + bias), e.g. hard iron",
+      DEEPNAV_FIELD(ekf.heading_bias_rad)},
+    P{"ekf.gate_dvl_sigma", ParamType::kDouble, "sigma", 1, 100, "3.0", "", "DVL innovation gate",
+      DEEPNAV_FIELD(ekf.gate_dvl_sigma)},
+    P{"ekf.gate_depth_sigma", ParamType::kDouble, "sigma", 1, 100, "3.0", "", "depth innovation gate",
+      DEEPNAV_FIELD(ekf.gate_depth_sigma)},
+    P{"ekf.gate_heading_sigma", ParamType::kDouble, "sigma", 1, 100, "3.0", "", "compass innovation gate",
+      DEEPNAV_FIELD(ekf.gate_heading_sigma)},
+    P{"ekf.gate_attitude_sigma", ParamType::kDouble, "sigma", 1, 100, "3.0", "", "AHRS innovation gate",
+      DEEPNAV_FIELD(ekf.gate_attitude_sigma)},
+    P{"ekf.gate_pose_sigma", ParamType::kDouble, "sigma", 1, 100, "3.0", "", "marker pose innovation gate",
+      DEEPNAV_FIELD(ekf.gate_pose_sigma)},
+    P{"ekf.gate_relative_pose_sigma", ParamType::kDouble, "sigma", 1, 100, "3.0", "", "visual odometry innovation gate",
+      DEEPNAV_FIELD(ekf.gate_relative_pose_sigma)},
+    P{"ekf.timeout_imu_s", ParamType::kDurationS, "s", 0, 10, "0.05", "", "IMU stale after this long without a sample (0: not monitored)",
+      DEEPNAV_FIELD(ekf.timeout_imu_us)},
+    P{"ekf.timeout_dvl_s", ParamType::kDurationS, "s", 0, 60, "1.0", "", "DVL stale timeout",
+      DEEPNAV_FIELD(ekf.timeout_dvl_us)},
+    P{"ekf.timeout_depth_s", ParamType::kDurationS, "s", 0, 60, "1.0", "", "depth stale timeout",
+      DEEPNAV_FIELD(ekf.timeout_depth_us)},
+    P{"ekf.timeout_heading_s", ParamType::kDurationS, "s", 0, 60, "1.0", "", "compass stale timeout",
+      DEEPNAV_FIELD(ekf.timeout_heading_us)},
+    P{"ekf.timeout_attitude_s", ParamType::kDurationS, "s", 0, 60, "1.0", "", "AHRS stale timeout",
+      DEEPNAV_FIELD(ekf.timeout_attitude_us)},
+    P{"ekf.max_delay_s", ParamType::kDurationS, "s", 0.01, 2.0, "0.5", "", "measurements older than this are dropped and counted",
+      DEEPNAV_FIELD(ekf.max_delay_us)},
+    P{"ekf.history_imu_capacity", ParamType::kInt, "epochs", 8, 4096, "160", "", "IMU epochs kept for re-propagation (cover max_delay at the IMU rate)",
+      DEEPNAV_FIELD(ekf.history_imu_capacity)},
+    P{"ekf.history_meas_capacity", ParamType::kInt, "measurements", 8, 4096, "128", "", "measurements kept for re-fusion inside the window",
+      DEEPNAV_FIELD(ekf.history_meas_capacity)},
+    P{"ekf.align_imu_samples", ParamType::kInt, "samples", 1, 1000, "20", "", "IMU samples averaged for the initial roll/pitch",
+      DEEPNAV_FIELD(ekf.align_imu_samples)},
 };
 
 #undef DEEPNAV_FIELD
@@ -90,7 +157,13 @@ bool loadBoardConfig(const std::string& path, BoardConfig* config, std::string* 
     if (error) *error = path + ": not valid YAML (line " + std::to_string(e.mark.line + 1) + "): " + e.msg;
     return false;
   }
-  return applyParams(bindParams(kBoardParams, *config), root, path, error);
+  if (!applyParams(bindParams(kBoardParams, *config), root, path, error)) return false;
+  std::string ekf_error;
+  if (!validateEkfConfig(config->ekf, &ekf_error)) {
+    if (error) *error = path + ": " + ekf_error;
+    return false;
+  }
+  return true;
 }
 
 std::string describeBoardParams() {

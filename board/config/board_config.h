@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "board/config/param_table.h"
+#include "nav/ekf/ekf_config.h"
 
 namespace deepnav {
 
@@ -41,6 +42,7 @@ struct BoardConfig {
     int channels;
     double rate_hz;
   } camera;
+  EkfConfig ekf;  // navigation filter: mounting, noise, gates, timeouts, delayed-fusion window
 };
 
 // Parses and validates a board file; unknown keys, wrong types and out-of-range values fail with one

@@ -5,7 +5,11 @@
 #include <set>
 #include <sstream>
 
+#include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <yaml-cpp/yaml.h>
+
+#include "nav/types/time.h"
 
 namespace deepnav {
 namespace {
@@ -19,6 +23,8 @@ std::string rangeText(const ParamSpecView& p) {
     case ParamType::kInt: s << "an integer in [" << p.min << ", " << p.max << "]"; return s.str();
     case ParamType::kDouble: s << "a number in [" << p.min << ", " << p.max << "]"; return s.str();
     case ParamType::kVec3: s << "a list of 3 numbers, each in [" << p.min << ", " << p.max << "]"; return s.str();
+    case ParamType::kRotation: s << "[roll, pitch, yaw], each in [" << p.min << ", " << p.max << "]"; return s.str();
+    case ParamType::kDurationS: s << "a duration in [" << p.min << ", " << p.max << "]"; return s.str();
   }
   return "?";
 }
@@ -83,15 +89,30 @@ bool applyScalar(const ParamSpecView& p, const YAML::Node& n, const std::string&
       *static_cast<double*>(p.target) = v;
       return true;
     }
-    case ParamType::kVec3: {
+    case ParamType::kVec3:
+    case ParamType::kRotation: {
       if (!n.IsSequence() || n.size() != 3) return fail(error, file, p, "is '" + show(n) + "'");
-      std::array<double, 3> v{};
+      Eigen::Vector3d v;
       for (std::size_t i = 0; i < 3; ++i) {
-        if (!parseNumber(n[i], &v[i]) || !inRange(p, v[i])) {
+        if (!parseNumber(n[i], &v[static_cast<Eigen::Index>(i)]) || !inRange(p, v[static_cast<Eigen::Index>(i)])) {
           return fail(error, file, p, "is " + show(n) + ", element " + std::to_string(i) + " invalid");
         }
       }
-      *static_cast<std::array<double, 3>*>(p.target) = v;
+      if (p.type == ParamType::kVec3) {
+        *static_cast<Eigen::Vector3d*>(p.target) = v;
+      } else {
+        const Eigen::Vector3d rad = v * (M_PI / 180.0);
+        *static_cast<Eigen::Quaterniond*>(p.target) = Eigen::AngleAxisd(rad.z(), Eigen::Vector3d::UnitZ()) *
+                                                      Eigen::AngleAxisd(rad.y(), Eigen::Vector3d::UnitY()) *
+                                                      Eigen::AngleAxisd(rad.x(), Eigen::Vector3d::UnitX());
+      }
+      return true;
+    }
+    case ParamType::kDurationS: {
+      double v = 0;
+      if (!parseNumber(n, &v)) return fail(error, file, p, "is '" + show(n) + "'");
+      if (!inRange(p, v)) return fail(error, file, p, "is " + show(n) + ", out of range");
+      *static_cast<TimeUs*>(p.target) = sToUs(v);
       return true;
     }
   }
@@ -165,7 +186,7 @@ std::string describeParams(const std::vector<ParamSpecView>& params) {
   std::ostringstream s;
   s << "| key | type | unit | default | allowed | meaning |\n|---|---|---|---|---|---|\n";
   for (const auto& p : params) {
-    static const char* kTypes[] = {"bool", "int", "double", "string", "choice", "vec3"};
+    static const char* kTypes[] = {"bool", "int", "double", "string", "choice", "vec3", "rotation", "duration"};
     s << "| `" << p.key << "` | " << kTypes[static_cast<int>(p.type)] << " | " << p.unit << " | `"
       << p.default_text << "` | " << rangeText(p) << " | " << p.doc << " |\n";
   }

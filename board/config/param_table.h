@@ -12,7 +12,10 @@ namespace deepnav {
 
 // A parameter is declared exactly once, in a table: key, type, unit, default, range, meaning.
 // Loading a YAML file walks the table, so defaults, validation and documentation cannot drift apart.
-enum class ParamType { kBool, kInt, kDouble, kString, kChoice, kVec3 };
+// kVec3 lands in an Eigen::Vector3d; kRotation is written [roll, pitch, yaw] in degrees (ZYX, as a
+// mounting rotation is measured) and lands in an Eigen::Quaterniond; kDurationS is written in seconds
+// and lands in a TimeUs (int64 microseconds).
+enum class ParamType { kBool, kInt, kDouble, kString, kChoice, kVec3, kRotation, kDurationS };
 
 template <typename Config>
 struct ParamSpec {
@@ -24,7 +27,7 @@ struct ParamSpec {
   const char* default_text; // default as YAML text ("100", "zstd", "[0, 0, 0]")
   const char* choices;      // kChoice: allowed values separated by '|'
   const char* doc;          // what it means
-  void* (*field)(Config&);  // where the value lands: bool*, int*, double*, std::string*, std::array<double,3>*
+  void* (*field)(Config&);  // where the value lands (see ParamType)
 };
 
 // Type-erased walkers, implemented once in param_table.cpp.

@@ -1,5 +1,6 @@
 #include "board/config/board_config.h"
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <string>
@@ -75,6 +76,29 @@ TEST(BoardConfig, EveryParameterIsDocumented) {
   const std::string table = describeBoardParams();
   EXPECT_NE(table.find("`loop.rate_hz` | int | Hz | `100` | an integer in [10, 1000]"), std::string::npos)
       << table;
+}
+
+}  // namespace
+}  // namespace deepnav
+
+namespace deepnav {
+namespace {
+
+TEST(BoardConfig, MountingRotationsLeverArmsAndDurations) {
+  const std::string path = writeTemp("ekf.yaml",
+                                     "ekf:\n  dvl_rotation_deg: [0, 0, 45]\n  p_dvl_in_robot_m: [0.2, 0, -0.4]\n"
+                                     "  timeout_dvl_s: 0.6\n");
+  BoardConfig c{};
+  std::string error;
+  ASSERT_TRUE(loadBoardConfig(path, &c, &error)) << error;
+  const Eigen::Vector3d x_dvl_in_robot = c.ekf.q_robot_dvl * Eigen::Vector3d::UnitX();
+  EXPECT_NEAR(x_dvl_in_robot.x(), std::sqrt(0.5), 1e-12);
+  EXPECT_NEAR(x_dvl_in_robot.y(), std::sqrt(0.5), 1e-12);
+  EXPECT_EQ(c.ekf.p_dvl_in_robot_m, Eigen::Vector3d(0.2, 0, -0.4));
+  EXPECT_EQ(c.ekf.timeout_dvl_us, 600000);
+  const std::string bad = writeTemp("ekf_bad.yaml", "ekf:\n  p_dvl_in_robot_m: [0.2, 0]\n");
+  EXPECT_FALSE(loadBoardConfig(bad, &c, &error));
+  EXPECT_NE(error.find("'ekf.p_dvl_in_robot_m' is '[0.2, 0]'; allowed: a list of 3 numbers"), std::string::npos) << error;
 }
 
 }  // namespace
