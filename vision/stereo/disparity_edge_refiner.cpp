@@ -1,0 +1,117 @@
+#include "vision/stereo/disparity_edge_refiner.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+namespace deepnav {
+namespace {
+
+constexpr int kMaxColourDiff = 3 * 255;
+
+// Running-count dilation of one line of n flags spaced by stride.
+void dilateLine(const std::uint8_t* in, std::uint8_t* out, int n, std::ptrdiff_t stride, int r) {
+  int count = 0;
+  for (int i = 0; i < std::min(r, n); ++i) count += in[i * stride];
+  for (int i = 0; i < n; ++i) {
+    if (i + r < n) count += in[(i + r) * stride];
+    if (i - r - 1 >= 0) count -= in[(i - r - 1) * stride];
+    out[i * stride] = count > 0 ? 1 : 0;
+  }
+}
+
+}  // namespace
+
+bool DisparityEdgeRefiner::allocate(int width_px, int height_px, int num_disparities) {
+  if (width_px < 1 || height_px < 1 || num_disparities < 1) return false;
+  width_px_ = width_px;
+  height_px_ = height_px;
+  bins_ = num_disparities + 1;
+  const std::size_t pixels = static_cast<std::size_t>(width_px) * height_px;
+  jump_.assign(pixels, 0);
+  band_.assign(pixels, 0);
+  rows_.assign(pixels, 0);
+  weight_lut_.assign(kMaxColourDiff + 1, 0.0f);
+  hist_w_.assign(bins_, 0.0f);
+  hist_wd_.assign(bins_, 0.0f);
+  source_px_.create(height_px, width_px, CV_32F);
+  return true;
+}
+
+void DisparityEdgeRefiner::markJumps(const cv::Mat& d, float jump_px) {
+  const int w = width_px_;
+  for (int v = 0; v < height_px_; ++v) {
+    const float* row = d.ptr<float>(v);
+    const float* down = d.ptr<float>(std::min(v + 1, height_px_ - 1));
+    std::uint8_t* out = jump_.data() + static_cast<std::size_t>(v) * w;
+    for (int u = 0; u < w; ++u) {
+      const float a = row[u];
+      const float right = row[std::min(u + 1, w - 1)];
+      const bool jump = a >= 0.0f && ((right >= 0.0f && std::fabs(right - a) > jump_px) ||
+                                      (down[u] >= 0.0f && std::fabs(down[u] - a) > jump_px));
+      out[u] = jump ? 1 : 0;
+    }
+  }
+}
+
+void DisparityEdgeRefiner::dilateJumps(int r) {
+  const int w = width_px_;
+  for (int v = 0; v < height_px_; ++v) {
+    const std::size_t offset = static_cast<std::size_t>(v) * w;
+    dilateLine(jump_.data() + offset, rows_.data() + offset, w, 1, r);
+  }
+  for (int u = 0; u < w; ++u) dilateLine(rows_.data() + u, band_.data() + u, height_px_, w, r);
+}
+
+float DisparityEdgeRefiner::weightedMedian(const cv::Mat& guide, int u, int v, int r) {
+  const int channels = guide.channels();
+  const int diff_scale = channels == 1 ? 3 : 1;
+  const std::uint8_t* centre = guide.ptr<std::uint8_t>(v) + u * channels;
+  std::fill(hist_w_.begin(), hist_w_.end(), 0.0f);
+  std::fill(hist_wd_.begin(), hist_wd_.end(), 0.0f);
+  float total = 0.0f;
+  for (int v2 = std::max(0, v - r); v2 <= std::min(height_px_ - 1, v + r); ++v2) {
+    const float* d_row = source_px_.ptr<float>(v2);
+    const std::uint8_t* g_row = guide.ptr<std::uint8_t>(v2);
+    for (int u2 = std::max(0, u - r); u2 <= std::min(width_px_ - 1, u + r); ++u2) {
+      const float dq = d_row[u2];
+      if (dq < 0.0f) continue;
+      const std::uint8_t* q = g_row + u2 * channels;
+      int diff = 0;
+      for (int c = 0; c < channels; ++c) diff += std::abs(q[c] - centre[c]);
+      const float wq = weight_lut_[diff * diff_scale];
+      const int bin = std::min(bins_ - 1, static_cast<int>(dq + 0.5f));
+      hist_w_[bin] += wq;
+      hist_wd_[bin] += wq * dq;
+      total += wq;
+    }
+  }
+  // the median bin, reported as the weighted mean of its members (keeps sub-pixel values)
+  float acc = 0.0f;
+  for (int b = 0; b < bins_; ++b) {
+    acc += hist_w_[b];
+    if (hist_w_[b] > 0.0f && acc >= 0.5f * total) return hist_wd_[b] / hist_w_[b];
+  }
+  return source_px_.at<float>(v, u);
+}
+
+void DisparityEdgeRefiner::apply(const cv::Mat& guide, int radius_px, float jump_px, float sigma,
+                                 cv::Mat* disparity_px) {
+  if (radius_px < 1 || sigma <= 0.0f) return;
+  if (sigma != lut_sigma_) {
+    for (int i = 0; i <= kMaxColourDiff; ++i) weight_lut_[i] = std::exp(-static_cast<float>(i) / sigma);
+    lut_sigma_ = sigma;
+  }
+  disparity_px->copyTo(source_px_);
+  markJumps(source_px_, jump_px);
+  dilateJumps(radius_px);
+  for (int v = 0; v < height_px_; ++v) {
+    float* out = disparity_px->ptr<float>(v);
+    const std::uint8_t* band = band_.data() + static_cast<std::size_t>(v) * width_px_;
+    for (int u = 0; u < width_px_; ++u) {
+      if (band[u] && out[u] >= 0.0f) out[u] = weightedMedian(guide, u, v, radius_px);
+    }
+  }
+}
+
+}  // namespace deepnav

@@ -1,0 +1,41 @@
+#pragma once
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "vision/stereo/elas_candidates.h"
+#include "vision/stereo/elas_descriptor.h"
+#include "vision/stereo/elas_params.h"
+
+namespace deepnav {
+
+// Dense MAP disparity of ELAS (Geiger et al. 2010, sec. 3.3): for every pixel,
+//   d* = argmin_d  beta * |f_ref - f_other(d)|_1  -  log(gamma + exp(-(d - mu)^2 / (2 sigma^2)))
+// (eq. 5) over the candidates d with |d - mu| <= sradius or d in the cell's support set N_S.
+// Costs are kept in descriptor units: the prior becomes an integer bonus
+//   P(x) = -log(1 + exp(-x^2 / (2 sigma^2)) / gamma) / beta   for x = |d - mu| <= sradius
+// (the constant log(gamma) shared by all candidates dropped), 0 elsewhere.
+class ElasDenseMatcher {
+ public:
+  bool allocate(const ElasParams& params);
+  // view_right: ref is the right image, its pixel (u, v) matches other's (u + d, v).
+  // mean_px: ElasPrior::mean() of the ref view. Writes integer disparities (CV_32F, -1 where
+  // unmatched) and, when subpixel_px is not null, the sub-pixel correction in [-0.5, 0.5] of each
+  // (kept apart so that the segment filters see clean integer steps).
+  void match(const ElasDescriptorImage& ref, const ElasDescriptorImage& other, bool view_right,
+             const cv::Mat& mean_px, const ElasCandidates& candidates, cv::Mat* disparity_px,
+             cv::Mat* subpixel_px) const;
+
+ private:
+  static constexpr int kPriorSteps = 16;  // resolution of the prior table: 1/16 px
+
+  void matchRow(const ElasDescriptorImage& ref, const ElasDescriptorImage& other, bool view_right,
+                const cv::Mat& mean_px, const ElasCandidates& candidates, int v, float* out,
+                float* subpixel) const;
+  int priorBonus(int d, float mu) const;
+
+  ElasParams params_;
+  std::vector<int> prior_bonus_;  // P(k / kPriorSteps), k = 0 .. sradius * kPriorSteps
+};
+
+}  // namespace deepnav
