@@ -1,5 +1,6 @@
 #include "nav/ekf/covariance_guard.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "nav/ekf/ekf_config.h"
@@ -41,15 +42,16 @@ VarianceBounds varianceBoundsFrom(const EkfConfig& c) {
   return b;
 }
 
-bool conditionCovariance(const VarianceBounds& b, FilterState* s) {
+bool conditionCovariance(const VarianceBounds& b, FilterState* s, int sym_dim) {
   const int n = s->dim();
   auto P = s->P.topLeftCorner(n, n);
   for (int i = 0; i < n; ++i) {
     if (!std::isfinite(P(i, i)) || P(i, i) <= 0.0) return false;
   }
   // Symmetrise in place: upper triangle := mean, lower := copy (no temporary).
+  const int m = std::min(n, sym_dim);
   for (int c = 1; c < n; ++c) {
-    for (int r = 0; r < c; ++r) {
+    for (int r = 0; r < std::min(c, m); ++r) {
       const double m = 0.5 * (P(r, c) + P(c, r));
       P(r, c) = m;
       P(c, r) = m;

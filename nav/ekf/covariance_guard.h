@@ -20,7 +20,10 @@ VarianceBounds varianceBoundsFrom(const EkfConfig& config);
 // breaking positive semi-definiteness: a variance above max scales its row and column by
 // sqrt(max / P_ii) (a congruence D P D), one below min gets (min - P_ii) added on the diagonal (adding
 // a PSD matrix). Returns false when a diagonal entry is non-finite or not positive, so the caller resets.
-bool conditionCovariance(const VarianceBounds& bounds, FilterState* s);
+// Only the first sym_dim rows and columns are symmetrised: after a propagation only the core block can
+// have lost symmetry (the cross blocks are written as X and X^T, the clone block is untouched), so the
+// propagation passes es::kCoreDim; an update passes s->dim() (the default).
+bool conditionCovariance(const VarianceBounds& bounds, FilterState* s, int sym_dim = es::kMaxDim);
 
 // Initial covariance of the core state (diagonal, from the config sigmas); clones are dropped.
 void resetCovariance(const EkfConfig& config, FilterState* s);

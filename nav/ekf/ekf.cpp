@@ -152,11 +152,11 @@ void Ekf::propagateTo(TimeUs t_us, const RobotImu& u) {
   state_.x = propagateNominal(state_.x, u, dt_s, config_.gravity_mps2);
   propagateCovariance(Phi, propagationNoise(config_, dt_s), &state_);
   state_.t_us = t_us;
-  finishStep();
+  finishStep(es::kCoreDim);
 }
 
-void Ekf::finishStep() {
-  if (conditionCovariance(bounds_, &state_) && isFiniteState(state_)) {
+void Ekf::finishStep(int sym_dim) {
+  if (conditionCovariance(bounds_, &state_, sym_dim) && isFiniteState(state_)) {
     last_good_x_ = state_.x;
     return;
   }
@@ -217,7 +217,7 @@ UpdateOutcome Ekf::applyRelativePose(const RelativePoseMeasurement& m) {
 void Ekf::applyMeasurement(LoggedMeasurement& e) {
   const FuseStatus previous = e.outcome;
   const UpdateOutcome r = applyPayload(e.payload);
-  finishStep();
+  finishStep(state_.dim());
   e.outcome = r.accepted ? FuseStatus::kAccepted : FuseStatus::kRejected;
   e.test_ratio = r.test_ratio;
   const NavSource src = sourceOf(e.payload);

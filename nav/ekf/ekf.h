@@ -94,7 +94,7 @@ class Ekf {
   void applyMeasurement(LoggedMeasurement& e);
   UpdateOutcome applyPayload(const MeasurementPayload& payload);
   UpdateOutcome applyRelativePose(const RelativePoseMeasurement& m);
-  void finishStep();
+  void finishStep(int sym_dim);
   void trimHistory();
   void alignFromImu(const ImuSample& sample);
   void startHistory(const ImuSample& sample);

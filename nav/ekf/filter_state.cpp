@@ -1,5 +1,7 @@
 #include "nav/ekf/filter_state.h"
 
+#include <cmath>
+
 #include "nav/ekf/so3.h"
 
 namespace deepnav {
@@ -44,8 +46,10 @@ bool isFiniteState(const FilterState& s) {
     const PoseClone& c = s.clones[static_cast<std::size_t>(i)];
     if (!c.p_robot_in_odom_m.allFinite() || !c.q_odom_robot.coeffs().allFinite()) return false;
   }
+  // NaN and Inf survive a sum (Inf - Inf = NaN): one pass instead of a test per entry. A finite sum can
+  // only overflow for entries near 1e308, which would be a broken covariance anyway.
   const int n = s.dim();
-  return s.P.topLeftCorner(n, n).allFinite();
+  return std::isfinite(s.P.topLeftCorner(n, n).sum());
 }
 
 }  // namespace deepnav

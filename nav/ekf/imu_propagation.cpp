@@ -56,15 +56,16 @@ CoreMatrix propagationNoise(const EkfConfig& c, double dt_s) {
 }
 
 void propagateCovariance(const CoreMatrix& Phi, const CoreMatrix& Q, FilterState* s) {
+  // Coefficient-based (lazy) products: at 15 x 15 they beat Eigen's blocked GEMM path.
   const CoreMatrix Pcc = s->P.topLeftCorner<es::kCoreDim, es::kCoreDim>();
-  const CoreMatrix PhiP = Phi * Pcc;
-  s->P.topLeftCorner<es::kCoreDim, es::kCoreDim>().noalias() = PhiP * Phi.transpose();
+  const CoreMatrix PhiP = Phi.lazyProduct(Pcc);
+  s->P.topLeftCorner<es::kCoreDim, es::kCoreDim>() = PhiP.lazyProduct(Phi.transpose());
   s->P.topLeftCorner<es::kCoreDim, es::kCoreDim>() += Q;
   const int nc = s->dim() - es::kCoreDim;
   if (nc == 0) return;
   using CrossBlock = Eigen::Matrix<double, es::kCoreDim, Eigen::Dynamic, 0, es::kCoreDim, es::kMaxDim - es::kCoreDim>;
   CrossBlock X(es::kCoreDim, nc);
-  X.noalias() = Phi * s->P.block(0, es::kCoreDim, es::kCoreDim, nc);
+  X = Phi.lazyProduct(s->P.block(0, es::kCoreDim, es::kCoreDim, nc));
   s->P.block(0, es::kCoreDim, es::kCoreDim, nc) = X;
   s->P.block(es::kCoreDim, 0, nc, es::kCoreDim) = X.transpose();
 }
