@@ -1,8 +1,102 @@
+#include <cstdio>
+#include <string>
+
 #include <CLI/CLI.hpp>
+#include <opencv2/imgcodecs.hpp>
+#include <opencv2/imgproc.hpp>
+
+#include "board/config/board_config.h"
+#include "board/replay/bench_replay.h"
+#include "vision/iqa/mdm.h"
+
+namespace {
+
+int runReplay(const deepnav::ReplayOptions& options) {
+  deepnav::ReplaySummary summary;
+  std::string error;
+  if (!deepnav::runBenchReplay(options, &summary, &error)) {
+    std::fprintf(stderr, "deepnav replay: %s\n", error.c_str());
+    return 1;
+  }
+  std::printf("%s", deepnav::formatReplaySummary(summary).c_str());
+  std::printf("outputs written to %s (replay.mcap, trajectory.tum%s, summary.json)\n", options.out_dir.c_str(),
+              summary.has_truth ? ", truth.tum" : "");
+  return summary.mismatches == 0 ? 0 : 3;
+}
+
+int runIqa(const std::string& path) {
+  const cv::Mat image = cv::imread(path, cv::IMREAD_UNCHANGED);
+  if (image.empty()) {
+    std::fprintf(stderr, "deepnav iqa: %s: cannot read the image\n", path.c_str());
+    return 1;
+  }
+  cv::Mat eight_bit = image;
+  if (image.depth() != CV_8U) image.convertTo(eight_bit, CV_8U, image.depth() == CV_16U ? 1.0 / 257.0 : 1.0);
+  if (eight_bit.channels() == 4) cv::cvtColor(eight_bit, eight_bit, cv::COLOR_BGRA2BGR);
+  deepnav::MdmScore mdm;
+  deepnav::MdmWorkspace ws;
+  if (!deepnav::computeMdm(eight_bit, &mdm, &ws)) {
+    std::fprintf(stderr, "deepnav iqa: %s: unsupported image type\n", path.c_str());
+    return 1;
+  }
+  std::printf("{\"f1\": %.6f, \"f2\": %.6f, \"f3\": %.6f, \"score\": %.6f}\n", mdm.f1, mdm.f2, mdm.f3, mdm.score);
+  return 0;
+}
+
+int runConfig(const std::string& board, bool list) {
+  if (list) {
+    std::printf("%s", deepnav::describeBoardParams().c_str());
+    return 0;
+  }
+  deepnav::BoardConfig config;
+  std::string error;
+  if (!deepnav::loadBoardConfig(board, &config, &error)) {
+    std::fprintf(stderr, "deepnav config: %s\n", error.c_str());
+    return 2;
+  }
+  std::printf("%s: valid\n", board.c_str());
+  return 0;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"deepnav: navigation firmware of a deep-sea work-class ROV"};
   app.require_subcommand(1);
+
+  deepnav::ReplayOptions replay;
+  bool realtime = false;
+  auto* rp = app.add_subcommand("replay", "replay a recording through the nav loop (bench)");
+  rp->add_option("recording", replay.input_path, "MCAP recording")->required()->check(CLI::ExistingFile);
+  rp->add_option("--out", replay.out_dir, "output directory")->required();
+  rp->add_option("--board", replay.board_path, "board file (default: the board stored in the recording)")
+      ->check(CLI::ExistingFile);
+  rp->add_flag("--realtime", realtime, "pace the replay at the recorded speed");
+  rp->add_flag("--rerun", replay.rerun, "re-run vision and ticks even if the recording holds outputs");
+  rp->add_flag("--record-images", replay.record_images, "copy the stereo images into the output recording");
+
+  std::string iqa_path;
+  auto* iq = app.add_subcommand("iqa", "MDM image quality of one image, as JSON");
+  iq->add_option("image", iqa_path, "image file")->required();
+
+  std::string board_path;
+  bool list = false;
+  auto* cf = app.add_subcommand("config", "validate a board file, or list every parameter");
+  cf->add_option("board", board_path, "board.yaml to validate");
+  cf->add_flag("--list", list, "print every parameter with unit, default and range (Markdown)");
+
   CLI11_PARSE(app, argc, argv);
+  if (*rp) {
+    replay.realtime = realtime;
+    return runReplay(replay);
+  }
+  if (*iq) return runIqa(iqa_path);
+  if (*cf) {
+    if (!list && board_path.empty()) {
+      std::fprintf(stderr, "deepnav config: give a board file or --list\n");
+      return 2;
+    }
+    return runConfig(board_path, list);
+  }
   return 0;
 }

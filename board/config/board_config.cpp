@@ -1,6 +1,7 @@
 #include "board/config/board_config.h"
 
 #include <fstream>
+#include <sstream>
 
 #include <yaml-cpp/yaml.h>
 
@@ -143,27 +144,35 @@ BoardConfig defaultBoardConfig() {
   return config;
 }
 
-bool loadBoardConfig(const std::string& path, BoardConfig* config, std::string* error) {
+bool loadBoardConfigText(const std::string& text, const std::string& name, BoardConfig* config,
+                         std::string* error) {
   *config = defaultBoardConfig();
-  std::ifstream in(path);
-  if (!in) {
-    if (error) *error = path + ": cannot open the board file";
-    return false;
-  }
   YAML::Node root;
   try {
-    root = YAML::Load(in);
+    root = YAML::Load(text);
   } catch (const YAML::Exception& e) {
-    if (error) *error = path + ": not valid YAML (line " + std::to_string(e.mark.line + 1) + "): " + e.msg;
+    if (error) *error = name + ": not valid YAML (line " + std::to_string(e.mark.line + 1) + "): " + e.msg;
     return false;
   }
-  if (!applyParams(bindParams(kBoardParams, *config), root, path, error)) return false;
+  if (!applyParams(bindParams(kBoardParams, *config), root, name, error)) return false;
   std::string ekf_error;
   if (!validateEkfConfig(config->ekf, &ekf_error)) {
-    if (error) *error = path + ": " + ekf_error;
+    if (error) *error = name + ": " + ekf_error;
     return false;
   }
   return true;
+}
+
+bool loadBoardConfig(const std::string& path, BoardConfig* config, std::string* error) {
+  std::ifstream in(path);
+  if (!in) {
+    *config = defaultBoardConfig();
+    if (error) *error = path + ": cannot open the board file";
+    return false;
+  }
+  std::stringstream text;
+  text << in.rdbuf();
+  return loadBoardConfigText(text.str(), path, config, error);
 }
 
 std::string describeBoardParams() {

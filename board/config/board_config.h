@@ -49,6 +49,11 @@ struct BoardConfig {
 // message naming the file, the key and the allowed range.
 bool loadBoardConfig(const std::string& path, BoardConfig* config, std::string* error);
 
+// The same from YAML text already in memory (e.g. the board stored in a recording); `name` is used in
+// messages in place of a file name.
+bool loadBoardConfigText(const std::string& text, const std::string& name, BoardConfig* config,
+                         std::string* error);
+
 // The built-in defaults (what an empty board.yaml gives).
 BoardConfig defaultBoardConfig();
 

@@ -1,0 +1,52 @@
+#pragma once
+#include <cstdint>
+#include <string>
+
+#include "board/config/board_config.h"
+#include "drivers/recording/record_sink.h"
+#include "nav/ekf/ekf.h"
+#include "nav/types/input_sample.h"
+#include "nav/types/nav_solution.h"
+
+namespace deepnav {
+
+// Counters of what the loop consumed, by kind.
+struct InputCounters {
+  std::uint64_t imu = 0, dvl = 0, depth = 0, heading = 0, attitude = 0, vision = 0;
+  std::uint64_t accepted = 0, rejected = 0, queued = 0, dropped_late = 0, bad_input = 0, not_aligned = 0;
+};
+
+// The deterministic heart of the nav loop: every input it consumes is recorded and fed to the filter, and
+// every tick produces one NavSolution, recorded too. It knows nothing of threads, clocks or files, so a
+// live dive and a bench replay run exactly this code, and a replay of its recording reproduces its
+// outputs bit for bit. No allocation after init().
+class NavCore {
+ public:
+  NavCore() = default;
+  NavCore(const NavCore&) = delete;
+  NavCore& operator=(const NavCore&) = delete;
+
+  bool init(const BoardConfig& config, RecordSink* sink, std::string* error);
+
+  // One input, in consumption order. It is recorded before it is used.
+  void consume(const InputSample& sample);
+
+  // End of a loop tick at t_us: the solution of the filter, recorded and returned.
+  const NavSolution& tick(TimeUs t_us);
+
+  const NavSolution& last() const { return solution_; }
+  const InputCounters& counters() const { return counters_; }
+  const Ekf& ekf() const { return ekf_; }
+
+ private:
+  void count(FuseResult r);
+  void consumeVision(const VisionResult& v);
+
+  Ekf ekf_;
+  RecordSink* sink_ = nullptr;
+  NavSolution solution_;
+  InputCounters counters_;
+  double image_quality_ = -1.0;
+};
+
+}  // namespace deepnav

@@ -1,0 +1,246 @@
+#include "board/replay/bench_replay.h"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
+
+#include "board/loop/clock.h"
+#include "board/loop/scheduler.h"
+#include "drivers/buffers/spsc_ring.h"
+#include "drivers/recording/recording_writer.h"
+#include "drivers/recording/sample_codec.h"
+#include "nav/metrics/trajectory_association.h"
+#include "vision/pipeline/vision_pipeline.h"
+
+namespace deepnav {
+namespace {
+
+constexpr const char* kBoardMetadata = "deepnav.board";
+
+struct PendingVision {
+  TimeUs available_us = 0;
+  VisionResult result;
+};
+
+// State of one bench replay: the core, its sink, vision, and the tick clock of the recording.
+struct BenchRun {
+  BoardConfig config;
+  std::string board_text;
+  RecordingWriter writer;
+  NavCore core;
+  VisionPipeline vision;
+  SpscRing<PendingVision> pending;
+  Scheduler scheduler;
+  int nav_task = 0;
+  int vision_task = 0;
+  TimeUs next_tick_us = 0;
+  bool ticking = false;
+  std::uint64_t tick_index = 0;
+  ReplaySummary* summary = nullptr;
+  TimeUs first_us = 0;
+  TimeUs last_us = 0;
+  bool any = false;
+  bool realtime = false;
+  TimeUs wall_offset_us = 0;
+};
+
+bool loadBoard(const ReplayOptions& o, const RecordingReader& reader, BenchRun* run, std::string* error) {
+  if (!o.board_path.empty()) {
+    std::ifstream in(o.board_path);
+    std::stringstream text;
+    text << in.rdbuf();
+    run->board_text = text.str();
+    return loadBoardConfig(o.board_path, &run->config, error);
+  }
+  const auto* stored = reader.metadata(kBoardMetadata);
+  if (stored && stored->count("yaml")) {
+    run->board_text = stored->at("yaml");
+    return loadBoardConfigText(run->board_text, o.input_path + " (stored board)", &run->config, error);
+  }
+  run->config = defaultBoardConfig();
+  return true;
+}
+
+bool initRun(const ReplayOptions& o, const RecordingReader& reader, BenchRun* run, std::string* error) {
+  if (!loadBoard(o, reader, run, error)) return false;
+  const BoardConfig& c = run->config;
+  const TaskSpec table[] = {
+      {"nav", c.loop.rate_hz, c.loop.budget_us, false},
+      {"vision", static_cast<int>(c.camera.rate_hz + 0.5), c.loop.vision_budget_us, true},
+  };
+  if (!run->scheduler.init(table, 2, c.loop.late_tick_tolerance, error)) return false;
+  run->nav_task = run->scheduler.findTask("nav");
+  run->vision_task = run->scheduler.findTask("vision");
+  std::error_code ec;
+  std::filesystem::create_directories(o.out_dir, ec);
+  RecordingOptions ro;
+  ro.compression = c.recording.compression;
+  ro.chunk_max_duration_s = c.recording.chunk_max_duration_s;
+  ro.chunk_size_kib = c.recording.chunk_size_kib;
+  ro.image_width_px = c.camera.width_px;
+  ro.image_height_px = c.camera.height_px;
+  ro.image_channels = c.camera.channels;
+  ro.record_images = o.record_images;
+  if (!run->writer.open(o.out_dir + "/replay.mcap", ro, error)) return false;
+  run->writer.recordMetadata(kBoardMetadata, {{"yaml", run->board_text}});
+  if (!run->pending.allocate(static_cast<std::size_t>(c.buffers.vision_results))) {
+    if (error) *error = "replay: cannot allocate the vision result queue";
+    return false;
+  }
+  VisionPipelineConfig vc;
+  vc.width_px = c.camera.width_px;
+  vc.height_px = c.camera.height_px;
+  if (!run->vision.init(vc, error)) return false;
+  return run->core.init(c, &run->writer, error);
+}
+
+void noteTime(BenchRun* run, TimeUs t_us) {
+  if (!run->any) run->first_us = t_us;
+  run->any = true;
+  run->last_us = std::max(run->last_us, t_us);
+}
+
+void tickAt(BenchRun* run, TimeUs t_us) {
+  if (run->realtime) {
+    if (run->tick_index == 0) run->wall_offset_us = monotonicUs() - t_us;
+    const TimeUs scheduled = t_us + run->wall_offset_us;
+    sleepUntilUs(scheduled);
+    run->scheduler.recordTickStart(scheduled, monotonicUs());
+  }
+  const TimeUs start = monotonicUs();
+  const NavSolution& s = run->core.tick(t_us);
+  run->scheduler.recordRun(run->nav_task, monotonicUs() - start);
+  run->summary->estimate.push_back({usToS(s.t_us), s.p_robot_in_odom_m, s.q_odom_robot});
+  ++run->summary->ticks;
+  ++run->tick_index;
+}
+
+// Raw sensor log: synthesise the loop's ticks on the recording clock.
+void advanceTicksTo(BenchRun* run, TimeUs t_us) {
+  if (!run->ticking) {
+    const TimeUs period = run->scheduler.periodUs();
+    run->next_tick_us = (t_us / period) * period;
+    run->ticking = true;
+  }
+  while (run->next_tick_us < t_us) {
+    while (const PendingVision* p = run->pending.front()) {
+      if (p->available_us > run->next_tick_us) break;
+      run->core.consume(p->result);
+      run->pending.pop();
+    }
+    tickAt(run, run->next_tick_us);
+    run->next_tick_us += run->scheduler.periodUs();
+  }
+}
+
+void runVision(BenchRun* run, const StereoFrame& frame) {
+  run->writer.recordFrame(frame, -1);
+  PendingVision p;
+  const TimeUs start = monotonicUs();
+  run->vision.process(frame, &p.result);
+  const TimeUs elapsed = monotonicUs() - start;
+  run->scheduler.recordRun(run->vision_task, elapsed);
+  p.result.processing_us = static_cast<std::uint32_t>(elapsed);
+  // Vision results reach the loop a fixed latency after capture, so the replay is deterministic.
+  p.available_us = frame.t_us + static_cast<TimeUs>(run->config.loop.vision_latency_ms) * 1000;
+  run->pending.push(p);
+  ++run->summary->frames;
+}
+
+bool onRerunEvent(BenchRun* run, const ReplayEvent& e) {
+  switch (e.kind) {
+    case ReplayEvent::Kind::kTruth:
+      run->summary->truth.push_back({usToS(e.t_us), e.truth.p_robot_in_odom_m, e.truth.q_odom_robot});
+      run->writer.recordTruth(e.truth);
+      return true;
+    case ReplayEvent::Kind::kSolution:
+      return true;  // outputs of an earlier run: recomputed here
+    case ReplayEvent::Kind::kFrame:
+      noteTime(run, e.t_us);
+      advanceTicksTo(run, e.t_us);
+      runVision(run, *e.frame);
+      return true;
+    case ReplayEvent::Kind::kInput:
+      if (std::holds_alternative<VisionResult>(e.input)) return true;  // recomputed from the images
+      noteTime(run, e.t_us);
+      advanceTicksTo(run, e.t_us);
+      run->core.consume(e.input);
+      return true;
+  }
+  return true;
+}
+
+bool onReproduceEvent(BenchRun* run, const ReplayEvent& e) {
+  switch (e.kind) {
+    case ReplayEvent::Kind::kTruth:
+      run->summary->truth.push_back({usToS(e.t_us), e.truth.p_robot_in_odom_m, e.truth.q_odom_robot});
+      run->writer.recordTruth(e.truth);
+      return true;
+    case ReplayEvent::Kind::kFrame:
+      run->writer.recordFrame(*e.frame, -1);
+      ++run->summary->frames;
+      return true;
+    case ReplayEvent::Kind::kInput:
+      noteTime(run, e.t_us);
+      run->core.consume(e.input);
+      return true;
+    case ReplayEvent::Kind::kSolution: {
+      noteTime(run, e.t_us);
+      tickAt(run, e.solution.t_us);
+      ++run->summary->solutions_compared;
+      if (!sameBits(run->core.last(), e.solution)) ++run->summary->mismatches;
+      return true;
+    }
+  }
+  return true;
+}
+
+void computeMetrics(ReplaySummary* s) {
+  s->has_truth = !s->truth.empty() && !s->estimate.empty();
+  std::vector<Eigen::Vector3d> positions;
+  positions.reserve(s->estimate.size());
+  for (const auto& p : s->estimate) positions.push_back(p.p_robot_in_odom_m);
+  s->smoothness = smoothnessMa(positions);
+  if (!s->has_truth) return;
+  const AssociatedTrajectories a = associateByTime(s->estimate, s->truth, 0.05);
+  s->errors = trajectoryErrors(a.estimate, a.truth);
+}
+
+}  // namespace
+
+bool runBenchReplay(const ReplayOptions& o, ReplaySummary* summary, std::string* error) {
+  *summary = ReplaySummary{};
+  RecordingReader reader;
+  if (!reader.open(o.input_path, error)) return false;
+  auto run = std::make_unique<BenchRun>();
+  run->summary = summary;
+  run->realtime = o.realtime;
+  if (!initRun(o, reader, run.get(), error)) return false;
+  summary->reproduce = reader.hasSolutions() && !o.rerun;
+  if (o.progress) {
+    std::fprintf(stderr, "replay: %s (%s)\n", o.input_path.c_str(),
+                 summary->reproduce ? "recorded run: re-running its ticks and comparing outputs"
+                                    : "sensor log: running the loop and vision on it");
+  }
+  const TimeUs wall_start = monotonicUs();
+  const bool ok = reader.forEach(
+      !summary->reproduce,
+      [&](const ReplayEvent& e) { return summary->reproduce ? onReproduceEvent(run.get(), e) : onRerunEvent(run.get(), e); },
+      error);
+  summary->wall_s = usToS(monotonicUs() - wall_start);
+  summary->dive_s = usToS(run->last_us - run->first_us);
+  summary->inputs = run->core.counters();
+  summary->read = reader.stats();
+  summary->warnings = reader.warnings();
+  summary->loop = run->scheduler.stats();
+  run->writer.recordLoopStats(run->last_us, summary->loop);
+  std::string close_error;
+  if (!run->writer.close(&close_error)) summary->warnings.push_back("replay.mcap: " + close_error);
+  if (!ok) return false;
+  computeMetrics(summary);
+  return writeReplayOutputs(o.out_dir, *summary, error);
+}
+
+}  // namespace deepnav

@@ -1,0 +1,58 @@
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "board/loop/nav_core.h"
+#include "drivers/replay/recording_reader.h"
+#include "nav/metrics/smoothness.h"
+#include "nav/metrics/stamped_pose.h"
+#include "nav/metrics/trajectory_errors.h"
+#include "nav/types/loop_stats.h"
+
+namespace deepnav {
+
+struct ReplayOptions {
+  std::string input_path;
+  std::string out_dir;           // replay.mcap, trajectory.tum, truth.tum, summary.json
+  std::string board_path;        // empty: the board stored in the recording, else the built-in defaults
+  bool rerun = false;            // re-run vision and ticks from the sensors even if outputs are recorded
+  bool record_images = false;    // copy the stereo images into replay.mcap
+  bool progress = true;          // per-stage progress lines on stderr
+  bool realtime = false;         // pace ticks at the recorded speed instead of as fast as possible
+};
+
+struct ReplaySummary {
+  bool reproduce = false;        // followed the recorded ticks (and compared the outputs)
+  std::uint64_t ticks = 0;
+  std::uint64_t frames = 0;
+  std::uint64_t solutions_compared = 0;
+  std::uint64_t mismatches = 0;  // recorded vs replayed NavSolution, bit for bit
+  double dive_s = 0.0;           // recording time span
+  double wall_s = 0.0;           // time the replay took
+  InputCounters inputs;
+  ReplayReadStats read;
+  LoopStats loop;
+  std::vector<std::string> warnings;
+  bool has_truth = false;
+  TrajectoryErrors errors;       // estimate vs truth, per tick
+  Smoothness smoothness;
+  std::vector<StampedPose> estimate;
+  std::vector<StampedPose> truth;
+};
+
+// Replays a recording through the same NavCore as the vehicle, as fast as the machine goes:
+//  - a recording of a run (it holds /nav/solution): inputs are fed in the order the loop consumed them
+//    and each recorded tick is re-run; every output is compared bit for bit with the recorded one;
+//  - a raw sensor log (e.g. from the simulator): ticks at the loop rate on the recording's clock, vision
+//    run on each stereo pair and its result fused once `loop.vision_latency_ms` has passed.
+// Writes the outputs to options.out_dir. False with a message naming the file on error.
+bool runBenchReplay(const ReplayOptions& options, ReplaySummary* summary, std::string* error);
+
+// Writes summary.json, trajectory.tum and truth.tum into dir.
+bool writeReplayOutputs(const std::string& dir, const ReplaySummary& summary, std::string* error);
+
+// The human-readable result table printed by `deepnav replay`.
+std::string formatReplaySummary(const ReplaySummary& summary);
+
+}  // namespace deepnav

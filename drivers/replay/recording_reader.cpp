@@ -1,0 +1,111 @@
+#include "drivers/replay/recording_reader.h"
+
+#include "drivers/recording/sample_codec.h"
+
+namespace deepnav {
+
+bool RecordingReader::open(const std::string& path, std::string* error) {
+  if (!reader_.open(path, error)) return false;
+  topic_of_channel_.clear();
+  counts_.fill(0);
+  for (const auto& [id, channel] : reader_.channels()) {
+    const Topic topic = topicByName(channel.topic);
+    topic_of_channel_[id] = topic;
+    if (topic == Topic::kCount) continue;
+    const auto it = reader_.statistics().channel_message_counts.find(id);
+    if (it != reader_.statistics().channel_message_counts.end()) counts_[static_cast<std::size_t>(topic)] += it->second;
+  }
+  stats_ = ReplayReadStats{};
+  return true;
+}
+
+const std::map<std::string, std::string>* RecordingReader::metadata(const std::string& name) const {
+  for (const auto& m : reader_.metadata()) {
+    if (m.name == name) return &m.metadata;
+  }
+  return nullptr;
+}
+
+bool RecordingReader::forEach(bool log_time_order, const Callback& callback, std::string* error) {
+  bool stopped = false;
+  auto visit = [&](const mcap::MessageView& m) {
+    if (!stopped && !handle(m, callback)) stopped = true;
+  };
+  const bool ok = log_time_order ? reader_.readAllInLogTimeOrder(visit) : reader_.readAll(visit);
+  if (!ok && error) *error = reader_.error();
+  return ok;
+}
+
+bool RecordingReader::handle(const mcap::MessageView& m, const Callback& callback) {
+  ++stats_.messages;
+  const auto it = topic_of_channel_.find(m.channel_id);
+  const Topic topic = it == topic_of_channel_.end() ? Topic::kCount : it->second;
+  ReplayEvent e;
+  switch (topic) {
+    case Topic::kImu:
+    case Topic::kDvlBottomTrack:
+    case Topic::kDepth:
+    case Topic::kHeading:
+    case Topic::kAttitude:
+    case Topic::kVisionResult:
+      e.kind = ReplayEvent::Kind::kInput;
+      if (!decodeInput(topic, m.data, m.size, &e.input)) break;
+      e.t_us = sampleTimeUs(e.input);
+      return callback(e);
+    case Topic::kNavSolution:
+      e.kind = ReplayEvent::Kind::kSolution;
+      if (!decodeSolution(m.data, m.size, &e.solution)) break;
+      e.t_us = e.solution.t_us;
+      return callback(e);
+    case Topic::kTruth:
+      e.kind = ReplayEvent::Kind::kTruth;
+      if (!decodeTruth(m.data, m.size, &e.truth)) break;
+      e.t_us = e.truth.t_us;
+      return callback(e);
+    case Topic::kStereoInfo:
+      if (frame_has_info_) ++stats_.incomplete_frames;
+      frame_has_info_ = decodeStereoInfo(m.data, m.size, &frame_);
+      frame_has_left_ = false;
+      if (!frame_has_info_) break;
+      return true;
+    case Topic::kLeftImage:
+    case Topic::kRightImage:
+      return handleImage(topic, m, callback);
+    case Topic::kCount:
+      ++stats_.unknown_topic;
+      return true;
+    default:
+      return true;  // viewer-only companions (/dvl, /pressure, /nav/odometry, /nav/loop_stats)
+  }
+  ++stats_.bad_messages;
+  return true;
+}
+
+bool RecordingReader::handleImage(Topic topic, const mcap::MessageView& m, const Callback& callback) {
+  const bool left = topic == Topic::kLeftImage;
+  int rows = 0, cols = 0, channels = 0;
+  if (!frame_has_info_ || (!left && !frame_has_left_) || !peekImageSize(m.data, m.size, &rows, &cols, &channels)) {
+    ++stats_.incomplete_frames;
+    return true;
+  }
+  // The frame buffer is sized by the first image and reused; a replay only reallocates if the size changes.
+  cv::Mat& img = left ? frame_.left : frame_.right;
+  img.create(rows, cols, channels == 3 ? CV_8UC3 : CV_8UC1);
+  if (!decodeImageInto(m.data, m.size, left, &frame_)) {
+    ++stats_.bad_messages;
+    frame_has_info_ = false;
+    return true;
+  }
+  if (left) {
+    frame_has_left_ = true;
+    return true;
+  }
+  frame_has_info_ = frame_has_left_ = false;
+  ReplayEvent e;
+  e.kind = ReplayEvent::Kind::kFrame;
+  e.t_us = frame_.t_us;
+  e.frame = &frame_;
+  return callback(e);
+}
+
+}  // namespace deepnav

@@ -1,0 +1,71 @@
+#pragma once
+#include <array>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "drivers/mcap/reader.h"
+#include "drivers/recording/topics.h"
+#include "nav/types/input_sample.h"
+#include "nav/types/nav_solution.h"
+#include "nav/types/truth_sample.h"
+#include "vision/types/stereo_frame.h"
+
+namespace deepnav {
+
+// One item of a recording as the replay sees it.
+struct ReplayEvent {
+  enum class Kind { kInput, kSolution, kFrame, kTruth };
+  Kind kind = Kind::kInput;
+  TimeUs t_us = 0;
+  InputSample input;
+  NavSolution solution;
+  TruthSample truth;
+  const StereoFrame* frame = nullptr;  // valid during the callback only
+};
+
+struct ReplayReadStats {
+  std::uint64_t messages = 0;
+  std::uint64_t bad_messages = 0;   // undecodable: counted and skipped
+  std::uint64_t unknown_topic = 0;  // channels deepnav does not know (e.g. from another tool)
+  std::uint64_t incomplete_frames = 0;
+};
+
+// Reads a deepnav recording back into the loop's sample types: the replay driver. Bad messages are
+// counted and skipped, never fatal; a recording cut off by a crash replays up to its last complete
+// chunk, with a warning.
+class RecordingReader {
+ public:
+  using Callback = std::function<bool(const ReplayEvent&)>;  // return false to stop
+
+  bool open(const std::string& path, std::string* error);
+
+  // True when the recording holds the loop's own outputs (a recording of a run, not a raw sensor log).
+  bool hasSolutions() const { return count(Topic::kNavSolution) > 0; }
+  bool hasTruth() const { return count(Topic::kTruth) > 0; }
+  std::uint64_t count(Topic topic) const { return counts_[static_cast<std::size_t>(topic)]; }
+
+  // File order = the order the loop consumed and produced; log-time order = sensor time order.
+  bool forEach(bool log_time_order, const Callback& callback, std::string* error);
+
+  const std::map<std::string, std::string>* metadata(const std::string& name) const;
+  bool truncated() const { return reader_.truncated(); }
+  const std::vector<std::string>& warnings() const { return reader_.warnings(); }
+  const ReplayReadStats& stats() const { return stats_; }
+
+ private:
+  bool handle(const mcap::MessageView& m, const Callback& callback);
+  bool handleImage(Topic topic, const mcap::MessageView& m, const Callback& callback);
+
+  mcap::Reader reader_;
+  std::map<std::uint16_t, Topic> topic_of_channel_;
+  std::array<std::uint64_t, kTopicCount> counts_{};
+  ReplayReadStats stats_;
+  StereoFrame frame_;
+  bool frame_has_info_ = false;
+  bool frame_has_left_ = false;
+};
+
+}  // namespace deepnav
