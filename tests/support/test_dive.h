@@ -1,0 +1,37 @@
+#pragma once
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "tools/sim/dive_recorder.h"
+
+namespace deepnav::testing {
+
+// Writes a simulated dive of the default scenario shortened to duration_s, and returns its path.
+inline std::string makeTestDive(const std::string& name, double duration_s, std::uint64_t seed = 7) {
+  const std::string dir = ::testing::TempDir();
+  std::ifstream in(std::string(DEEPNAV_SOURCE_DIR) + "/tools/sim/scenarios/default.yaml");
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string yaml = text.str();
+  const std::string key = "duration_s: 120.0";
+  const auto at = yaml.find(key);
+  if (at != std::string::npos) yaml.replace(at, key.size(), "duration_s: " + std::to_string(duration_s));
+  const std::string scenario = dir + name + ".yaml";
+  std::ofstream(scenario) << yaml;
+  sim::DiveRecordOptions o;
+  o.scenario_path = scenario;
+  o.out_path = dir + name + ".mcap";
+  o.board_path = std::string(DEEPNAV_SOURCE_DIR) + "/board/sim/board.yaml";
+  o.seed = seed;
+  o.progress = false;
+  sim::DiveRecordSummary summary;
+  std::string error;
+  EXPECT_TRUE(sim::recordDive(o, &summary, &error)) << error;
+  return o.out_path;
+}
+
+}  // namespace deepnav::testing

@@ -1,0 +1,89 @@
+#include "tools/sim/dive_recorder.h"
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "board/config/board_config.h"
+#include "drivers/recording/recording_writer.h"
+#include "tools/sim/scenario_loader.h"
+#include "tools/sim/sensor_simulator.h"
+
+namespace deepnav::sim {
+namespace {
+
+TruthSample toTruth(const GroundTruthSample& g) {
+  TruthSample t;
+  t.t_us = g.t_us;
+  t.p_robot_in_odom_m = g.p_robot_in_odom_m;
+  t.q_odom_robot = g.q_odom_robot;
+  t.v_robot_in_odom_mps = g.v_robot_in_odom_mps;
+  t.w_robot_radps = g.w_robot_radps;
+  return t;
+}
+
+bool readText(const std::string& path, std::string* text, std::string* error) {
+  std::ifstream in(path);
+  if (!in) {
+    if (error) *error = path + ": cannot open";
+    return false;
+  }
+  std::stringstream s;
+  s << in.rdbuf();
+  *text = s.str();
+  return true;
+}
+
+// Sensor samples become loop inputs; the camera ticks wait for the renderer.
+void recordEvent(const SimEvent& e, RecordingWriter* writer, DiveRecordSummary* summary) {
+  switch (e.stream) {
+    case SimStream::kGroundTruth: writer->recordTruth(toTruth(std::get<GroundTruthSample>(e.sample))); break;
+    case SimStream::kImu: writer->recordInput(std::get<ImuSample>(e.sample)); break;
+    case SimStream::kDvl: writer->recordInput(std::get<DvlSample>(e.sample)); break;
+    case SimStream::kCompass: writer->recordInput(std::get<HeadingSample>(e.sample)); break;
+    case SimStream::kAttitude: writer->recordInput(std::get<AttitudeSample>(e.sample)); break;
+    case SimStream::kDepth: writer->recordInput(std::get<DepthSample>(e.sample)); break;
+    case SimStream::kCamera: ++summary->camera_ticks; break;
+    case SimStream::kCount: break;
+  }
+}
+
+}  // namespace
+
+bool recordDive(const DiveRecordOptions& o, DiveRecordSummary* summary, std::string* error) {
+  *summary = DiveRecordSummary{};
+  Scenario scenario;
+  if (!loadScenario(o.scenario_path, &scenario, error)) return false;
+  std::string board_text;
+  BoardConfig board;
+  if (!readText(o.board_path, &board_text, error) || !loadBoardConfig(o.board_path, &board, error)) return false;
+  SensorSimulator sim;
+  if (!sim.init(scenario, o.seed, error)) return false;
+  RecordingWriter writer;
+  RecordingOptions ro;
+  ro.compression = board.recording.compression;
+  ro.image_width_px = board.camera.width_px;
+  ro.image_height_px = board.camera.height_px;
+  ro.image_channels = board.camera.channels;
+  if (!writer.open(o.out_path, ro, error)) return false;
+  writer.recordMetadata("deepnav.board", {{"yaml", board_text}, {"path", o.board_path}});
+  writer.recordMetadata("deepnav.sim", {{"scenario", o.scenario_path}, {"seed", std::to_string(o.seed)}});
+  SimEvent e;
+  TimeUs next_report_us = 0;
+  while (sim.next(&e)) {
+    recordEvent(e, &writer, summary);
+    summary->duration_s = usToS(e.t_us);
+    if (o.progress && e.t_us >= next_report_us) {
+      std::fprintf(stderr, "sim: %5.1f / %.0f s simulated\n", usToS(e.t_us), scenario.duration_s);
+      next_report_us = e.t_us + 30 * kUsPerS;
+    }
+  }
+  summary->messages = writer.messages();
+  if (writer.failures() > 0) {
+    if (error) *error = o.out_path + ": " + std::to_string(writer.failures()) + " messages could not be written";
+    return false;
+  }
+  return writer.close(error);
+}
+
+}  // namespace deepnav::sim

@@ -1,0 +1,27 @@
+#pragma once
+#include <cstdint>
+#include <string>
+
+#include "tools/sim/scenario.h"
+
+namespace deepnav::sim {
+
+struct DiveRecordOptions {
+  std::string scenario_path;
+  std::string out_path;
+  std::string board_path;   // stored in the recording so that replays use the vehicle's board
+  std::uint64_t seed = 1;
+  bool progress = true;
+};
+
+struct DiveRecordSummary {
+  std::uint64_t messages = 0;
+  std::uint64_t camera_ticks = 0;
+  double duration_s = 0.0;
+};
+
+// Runs the simulator over a scenario and writes every stream (sensors and ground truth) to a deepnav
+// recording. False with a message naming the file or key on error.
+bool recordDive(const DiveRecordOptions& options, DiveRecordSummary* summary, std::string* error);
+
+}  // namespace deepnav::sim
