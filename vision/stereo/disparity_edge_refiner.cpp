@@ -8,6 +8,7 @@ namespace deepnav {
 namespace {
 
 constexpr int kMaxColourDiff = 3 * 255;
+constexpr int kStridePx = 2;
 
 // Running-count dilation of one line of n flags spaced by stride.
 void dilateLine(const std::uint8_t* in, std::uint8_t* out, int n, std::ptrdiff_t stride, int r) {
@@ -70,10 +71,16 @@ float DisparityEdgeRefiner::weightedMedian(const cv::Mat& guide, int u, int v, i
   std::fill(hist_w_.begin(), hist_w_.end(), 0.0f);
   std::fill(hist_wd_.begin(), hist_wd_.end(), 0.0f);
   float total = 0.0f;
-  for (int v2 = std::max(0, v - r); v2 <= std::min(height_px_ - 1, v + r); ++v2) {
+  // The window is sampled on a lattice of kStridePx centred on the pixel: the same reach for a
+  // quarter of the work; the colour weights, not the sample density, carry the edge.
+  for (int dv = -r; dv <= r; dv += kStridePx) {
+    const int v2 = v + dv;
+    if (v2 < 0 || v2 >= height_px_) continue;
     const float* d_row = source_px_.ptr<float>(v2);
     const std::uint8_t* g_row = guide.ptr<std::uint8_t>(v2);
-    for (int u2 = std::max(0, u - r); u2 <= std::min(width_px_ - 1, u + r); ++u2) {
+    for (int du = -r; du <= r; du += kStridePx) {
+      const int u2 = u + du;
+      if (u2 < 0 || u2 >= width_px_) continue;
       const float dq = d_row[u2];
       if (dq < 0.0f) continue;
       const std::uint8_t* q = g_row + u2 * channels;

@@ -10,7 +10,8 @@ namespace deepnav {
 // nearer surface by about half a window across a depth edge, and the left-right check cannot see
 // it because both views fatten alike. Depth edges mostly coincide with image edges, so every
 // valid pixel within radius_px of a disparity jump (> jump_px between 4-neighbours) takes the
-// weighted median of the valid disparities in its (2 radius + 1)^2 window, each neighbour q
+// weighted median of the valid disparities in its (2 radius + 1)^2 window (sampled every second
+// pixel in both directions, the centre included), each neighbour q
 // weighted by its colour similarity to the pixel p, w = exp(-|I_p - I_q|_1 / sigma) (sum over BGR,
 // or 3x the grey difference): a joint weighted median as in Ma et al., "Constant Time Weighted
 // Median Filtering for Stereo Matching and Beyond", ICCV 2013. Filtering only the band around

@@ -70,7 +70,9 @@ bool ElasDisparity::compute(const cv::Mat& left, const cv::Mat& right, cv::Mat* 
   const bool have_left = prior_left_.build(support_.meshPoints(), false);
   const bool have_right = prior_right_.build(support_.meshPoints(), true);
   if (!have_left || !have_right) {
-    disparity_px->setTo(kInvalidDisparity);  // nothing could be matched reliably
+    // nothing could be matched reliably (std::fill: Mat::setTo allocates)
+    std::fill(disparity_px->ptr<float>(0), disparity_px->ptr<float>(0) + disparity_px->total(),
+              kInvalidDisparity);
     return true;
   }
   candidates_left_.build(support_.points(), false);

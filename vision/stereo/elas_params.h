@@ -47,7 +47,7 @@ struct ElasParams {
   // Edge-aware refinement (DisparityEdgeRefiner, beyond the paper): pixels within
   // refine_radius_px of a jump > refine_jump_px take the colour-weighted median of their window,
   // undoing the foreground fattening of window matching. refine_radius_px = 0 disables it.
-  int refine_radius_px = 5;
+  int refine_radius_px = 8;
   float refine_jump_px = 2.0f;
   float refine_sigma = 10.0f;    // colour distance (sum of |dB|+|dG|+|dR|, or 3|dGrey|) scale
 

@@ -45,7 +45,8 @@ bool ElasPrior::build(const std::vector<SupportPoint>& points, bool view_right) 
   }
   vertices_.clear();
   triangles_.clear();
-  mean_px_.setTo(-1.0f);
+  // std::fill rather than Mat::setTo, which allocates a scratch buffer on every call
+  std::fill(mean_px_.ptr<float>(0), mean_px_.ptr<float>(0) + mean_px_.total(), -1.0f);
   for (const SupportPoint& p : points) {
     const int u = view_right ? p.u_px - p.d_px : p.u_px;
     if (u < 0) continue;
