@@ -7,6 +7,7 @@
 
 #include "board/config/board_config.h"
 #include "board/replay/bench_replay.h"
+#include "board/replay/realtime_replay.h"
 #include "vision/iqa/mdm.h"
 
 namespace {
@@ -14,7 +15,9 @@ namespace {
 int runReplay(const deepnav::ReplayOptions& options) {
   deepnav::ReplaySummary summary;
   std::string error;
-  if (!deepnav::runBenchReplay(options, &summary, &error)) {
+  const bool ok = options.realtime ? deepnav::runRealtimeReplay(options, &summary, &error)
+                                   : deepnav::runBenchReplay(options, &summary, &error);
+  if (!ok) {
     std::fprintf(stderr, "deepnav replay: %s\n", error.c_str());
     return 1;
   }
@@ -71,7 +74,7 @@ int main(int argc, char** argv) {
   rp->add_option("--out", replay.out_dir, "output directory")->required();
   rp->add_option("--board", replay.board_path, "board file (default: the board stored in the recording)")
       ->check(CLI::ExistingFile);
-  rp->add_flag("--realtime", realtime, "pace the replay at the recorded speed");
+  rp->add_flag("--realtime", realtime, "play at the recorded speed through the threaded vehicle runtime");
   rp->add_flag("--rerun", replay.rerun, "re-run vision and ticks even if the recording holds outputs");
   rp->add_flag("--record-images", replay.record_images, "copy the stereo images into the output recording");
 

@@ -6,7 +6,7 @@
 #include <memory>
 #include <sstream>
 
-#include "board/loop/clock.h"
+#include "drivers/clock/monotonic_clock.h"
 #include "board/loop/scheduler.h"
 #include "drivers/buffers/spsc_ring.h"
 #include "drivers/recording/recording_writer.h"
@@ -42,25 +42,10 @@ struct BenchRun {
   TimeUs first_us = 0;
   TimeUs last_us = 0;
   bool any = false;
-  bool realtime = false;
-  TimeUs wall_offset_us = 0;
 };
 
 bool loadBoard(const ReplayOptions& o, const RecordingReader& reader, BenchRun* run, std::string* error) {
-  if (!o.board_path.empty()) {
-    std::ifstream in(o.board_path);
-    std::stringstream text;
-    text << in.rdbuf();
-    run->board_text = text.str();
-    return loadBoardConfig(o.board_path, &run->config, error);
-  }
-  const auto* stored = reader.metadata(kBoardMetadata);
-  if (stored && stored->count("yaml")) {
-    run->board_text = stored->at("yaml");
-    return loadBoardConfigText(run->board_text, o.input_path + " (stored board)", &run->config, error);
-  }
-  run->config = defaultBoardConfig();
-  return true;
+  return loadReplayBoard(o.board_path, reader, o.input_path, &run->config, &run->board_text, error);
 }
 
 bool initRun(const ReplayOptions& o, const RecordingReader& reader, BenchRun* run, std::string* error) {
@@ -103,14 +88,7 @@ void noteTime(BenchRun* run, TimeUs t_us) {
 }
 
 void tickAt(BenchRun* run, TimeUs t_us) {
-  if (run->realtime) {
-    if (run->tick_index == 0) run->wall_offset_us = monotonicUs() - t_us;
-    const TimeUs scheduled = t_us + run->wall_offset_us;
-    sleepUntilUs(scheduled);
-    run->scheduler.recordTickStart(scheduled, monotonicUs());
-  } else {
-    run->scheduler.recordTickStart(t_us, t_us);  // as fast as possible: a tick is never late
-  }
+  run->scheduler.recordTickStart(t_us, t_us);  // as fast as possible: a tick is never late
   const TimeUs start = monotonicUs();
   const NavSolution& s = run->core.tick(t_us);
   run->scheduler.recordRun(run->nav_task, monotonicUs() - start);
@@ -212,13 +190,31 @@ void computeMetrics(ReplaySummary* s) {
 
 }  // namespace
 
+bool loadReplayBoard(const std::string& board_path, const RecordingReader& reader, const std::string& recording,
+                     BoardConfig* config, std::string* board_text, std::string* error) {
+  if (!board_path.empty()) {
+    std::ifstream in(board_path);
+    std::stringstream text;
+    text << in.rdbuf();
+    *board_text = text.str();
+    return loadBoardConfig(board_path, config, error);
+  }
+  const auto* stored = reader.metadata(kBoardMetadata);
+  if (stored && stored->count("yaml")) {
+    *board_text = stored->at("yaml");
+    return loadBoardConfigText(*board_text, recording + " (stored board)", config, error);
+  }
+  *config = defaultBoardConfig();
+  board_text->clear();
+  return true;
+}
+
 bool runBenchReplay(const ReplayOptions& o, ReplaySummary* summary, std::string* error) {
   *summary = ReplaySummary{};
   RecordingReader reader;
   if (!reader.open(o.input_path, error)) return false;
   auto run = std::make_unique<BenchRun>();
   run->summary = summary;
-  run->realtime = o.realtime;
   if (!initRun(o, reader, run.get(), error)) return false;
   summary->reproduce = reader.hasSolutions() && !o.rerun;
   if (o.progress) {

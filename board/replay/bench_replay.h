@@ -19,7 +19,7 @@ struct ReplayOptions {
   bool rerun = false;            // re-run vision and ticks from the sensors even if outputs are recorded
   bool record_images = false;    // copy the stereo images into replay.mcap
   bool progress = true;          // per-stage progress lines on stderr
-  bool realtime = false;         // pace ticks at the recorded speed instead of as fast as possible
+  bool realtime = false;         // play at the recorded speed through the threaded runtime (realtime_replay.h)
 };
 
 struct ReplaySummary {
@@ -48,6 +48,11 @@ struct ReplaySummary {
 //    run on each stereo pair and its result fused once `loop.vision_latency_ms` has passed.
 // Writes the outputs to options.out_dir. False with a message naming the file on error.
 bool runBenchReplay(const ReplayOptions& options, ReplaySummary* summary, std::string* error);
+
+// The board a replay runs with: board_path if given, else the board stored in the recording, else the
+// built-in defaults. board_text receives its YAML (stored again in the replay's own recording).
+bool loadReplayBoard(const std::string& board_path, const RecordingReader& reader, const std::string& recording,
+                     BoardConfig* config, std::string* board_text, std::string* error);
 
 // Writes summary.json, trajectory.tum and truth.tum into dir.
 bool writeReplayOutputs(const std::string& dir, const ReplaySummary& summary, std::string* error);

@@ -411,6 +411,20 @@ std::size_t encodeLoopStats(TimeUs t_us, const LoopStats& s, std::uint8_t* out, 
   });
 }
 
+bool peekImageSize(const std::uint8_t* data, std::size_t size, int* rows, int* cols, int* channels) {
+  CdrReader r(data, size);
+  TimeUs t_us = 0;
+  std::uint32_t h = 0, w = 0;
+  std::string encoding;
+  if (!readHeader(r, &t_us) || !r.u32(&h) || !r.u32(&w) || !r.string(&encoding)) return false;
+  *channels = encoding == "bgr8" ? 3 : (encoding == "mono8" ? 1 : 0);
+  constexpr std::uint32_t kMaxSide = 16384;
+  if (*channels == 0 || h == 0 || w == 0 || h > kMaxSide || w > kMaxSide) return false;
+  *rows = static_cast<int>(h);
+  *cols = static_cast<int>(w);
+  return true;
+}
+
 bool sameBits(const NavSolution& a, const NavSolution& b) {
   auto same = [](const auto& x, const auto& y) { return std::memcmp(&x, &y, sizeof x) == 0; };
   return a.t_us == b.t_us && same(a.p_robot_in_odom_m, b.p_robot_in_odom_m) &&

@@ -39,6 +39,9 @@ bool decodeStereoInfo(const std::uint8_t* data, std::size_t size, StereoFrame* o
 // (frames come from the preallocated pool); false when they differ or the message is malformed.
 bool decodeImageInto(const std::uint8_t* data, std::size_t size, bool left, StereoFrame* frame);
 
+// Size and channels of an encoded sensor_msgs/Image (mono8 or bgr8), without decoding the pixels.
+bool peekImageSize(const std::uint8_t* data, std::size_t size, int* rows, int* cols, int* channels);
+
 // Equality of every bit of two solutions (replay must reproduce the recording exactly).
 bool sameBits(const NavSolution& a, const NavSolution& b);
 

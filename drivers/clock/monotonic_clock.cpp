@@ -1,4 +1,4 @@
-#include "board/loop/clock.h"
+#include "drivers/clock/monotonic_clock.h"
 
 #include <cerrno>
 #include <ctime>

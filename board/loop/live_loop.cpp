@@ -1,0 +1,169 @@
+#include "board/loop/live_loop.h"
+
+#include <chrono>
+
+#include "drivers/clock/monotonic_clock.h"
+
+namespace deepnav {
+
+bool LiveLoop::init(const BoardConfig& c, const std::string& board_text, const std::string& recording_path,
+                    std::string* error) {
+  config_ = c;
+  LiveInputCapacities caps;
+  caps.imu = static_cast<std::size_t>(c.buffers.imu);
+  caps.dvl = static_cast<std::size_t>(c.buffers.dvl);
+  caps.heading = static_cast<std::size_t>(c.buffers.heading);
+  caps.attitude = static_cast<std::size_t>(c.buffers.attitude);
+  caps.depth = static_cast<std::size_t>(c.buffers.depth);
+  caps.frames = static_cast<std::size_t>(c.buffers.frames);
+  caps.width_px = c.camera.width_px;
+  caps.height_px = c.camera.height_px;
+  caps.channels = c.camera.channels;
+  if (!inputs_.allocate(caps) || !vision_results_.allocate(static_cast<std::size_t>(c.buffers.vision_results))) {
+    if (error) *error = "loop: cannot allocate the input buffers (see buffers.* in the board file)";
+    return false;
+  }
+  const TaskSpec table[] = {
+      {"nav", c.loop.rate_hz, c.loop.budget_us, false},
+      {"stats", 1, c.loop.budget_us, false},
+      {"vision", static_cast<int>(c.camera.rate_hz + 0.5), c.loop.vision_budget_us, true},
+  };
+  if (!scheduler_.init(table, 3, c.loop.late_tick_tolerance, error)) return false;
+  nav_task_ = scheduler_.findTask("nav");
+  stats_task_ = scheduler_.findTask("stats");
+  vision_task_ = scheduler_.findTask("vision");
+  VisionPipelineConfig vc;
+  vc.width_px = c.camera.width_px;
+  vc.height_px = c.camera.height_px;
+  if (!vision_.init(vc, error)) return false;
+  recording_ = !recording_path.empty() && c.recording.enabled;
+  sink_ = nullptr;
+  if (recording_) {
+    RecordingOptions ro;
+    ro.compression = c.recording.compression;
+    ro.chunk_max_duration_s = c.recording.chunk_max_duration_s;
+    ro.chunk_size_kib = c.recording.chunk_size_kib;
+    ro.image_width_px = c.camera.width_px;
+    ro.image_height_px = c.camera.height_px;
+    ro.image_channels = c.camera.channels;
+    ro.record_images = c.recording.record_images;
+    if (!recorder_.start(recording_path, ro, {{"deepnav.board", {{"yaml", board_text}}}},
+                         static_cast<std::size_t>(c.buffers.record), static_cast<std::size_t>(c.buffers.frames),
+                         &inputs_.pool, error)) {
+      return false;
+    }
+    sink_ = &recorder_;
+  }
+  return core_.init(c, sink_, error);
+}
+
+bool LiveLoop::start(TimeUs clock_offset_us, std::string* error) {
+  if (running_.load()) {
+    if (error) *error = "loop: already running";
+    return false;
+  }
+  clock_offset_us_ = clock_offset_us;
+  running_.store(true, std::memory_order_release);
+  vision_thread_ = std::thread([this] { visionThread(); });
+  loop_thread_ = std::thread([this] { loopThread(); });
+  return true;
+}
+
+bool LiveLoop::stop(std::string* error) {
+  running_.store(false, std::memory_order_release);
+  if (loop_thread_.joinable()) loop_thread_.join();
+  if (vision_thread_.joinable()) vision_thread_.join();
+  return recording_ ? recorder_.stop(error) : true;
+}
+
+NavSolution LiveLoop::latest() const {
+  std::lock_guard<std::mutex> lock(latest_mutex_);
+  return latest_;
+}
+
+InputCounters LiveLoop::counters() const {
+  std::lock_guard<std::mutex> lock(latest_mutex_);
+  return counters_;
+}
+
+// Never blocks the loop: if a reader holds the lock, this tick's copy is skipped.
+void LiveLoop::publish(const NavSolution& s) {
+  std::unique_lock<std::mutex> lock(latest_mutex_, std::try_to_lock);
+  if (!lock.owns_lock()) return;
+  latest_ = s;
+  counters_ = core_.counters();
+}
+
+// Consumes the oldest queued sample not newer than t_us (rings are each in time order, so a k-way merge
+// of their fronts keeps the inputs in time order). False when nothing is due.
+bool LiveLoop::consumeOldest(TimeUs t_us) {
+  TimeUs best = t_us + 1;
+  int which = -1;
+  auto consider = [&](auto& ring, int id) {
+    if (const auto* f = ring.front(); f && f->t_us < best) {
+      best = f->t_us;
+      which = id;
+    }
+  };
+  consider(inputs_.imu, 0);
+  consider(inputs_.dvl, 1);
+  consider(inputs_.heading, 2);
+  consider(inputs_.attitude, 3);
+  consider(inputs_.depth, 4);
+  switch (which) {
+    case 0: core_.consume(*inputs_.imu.front()); inputs_.imu.pop(); return true;
+    case 1: core_.consume(*inputs_.dvl.front()); inputs_.dvl.pop(); return true;
+    case 2: core_.consume(*inputs_.heading.front()); inputs_.heading.pop(); return true;
+    case 3: core_.consume(*inputs_.attitude.front()); inputs_.attitude.pop(); return true;
+    case 4: core_.consume(*inputs_.depth.front()); inputs_.depth.pop(); return true;
+    default: return false;
+  }
+}
+
+void LiveLoop::runTick(TimeUs t_us) {
+  while (consumeOldest(t_us)) {
+  }
+  // Vision results are late by nature: they carry their capture time and are fused at it.
+  VisionResult v;
+  while (vision_results_.tryPop(v)) core_.consume(v);
+  publish(core_.tick(t_us));
+}
+
+void LiveLoop::loopThread() {
+  const TimeUs period = scheduler_.periodUs();
+  TimeUs next_us = ((monotonicUs() + clock_offset_us_) / period + 1) * period;
+  for (std::uint64_t tick = 0; running_.load(std::memory_order_acquire); ++tick) {
+    sleepUntilUs(next_us - clock_offset_us_);
+    const TimeUs start = monotonicUs();
+    scheduler_.recordTickStart(next_us, start + clock_offset_us_);
+    runTick(next_us);
+    scheduler_.recordRun(nav_task_, monotonicUs() - start);
+    if (scheduler_.due(stats_task_, tick) && recording_) recorder_.recordLoopStats(next_us, scheduler_.stats());
+    next_us += period;
+    // After an overrun, skip the ticks that are already past instead of bursting to catch up.
+    const TimeUs now = monotonicUs() + clock_offset_us_;
+    if (next_us < now) next_us += ((now - next_us) / period + 1) * period;
+  }
+}
+
+void LiveLoop::visionThread() {
+  while (running_.load(std::memory_order_acquire)) {
+    int index = -1;
+    if (!inputs_.frames.tryPop(index)) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+      continue;
+    }
+    const StereoFrame& frame = inputs_.pool.frame(index);
+    if (recording_) recorder_.recordFrame(frame, index);
+    VisionResult result;
+    const TimeUs start = monotonicUs();
+    vision_.process(frame, &result);
+    const TimeUs elapsed = monotonicUs() - start;
+    result.processing_us = static_cast<std::uint32_t>(elapsed);
+    scheduler_.recordRun(vision_task_, elapsed);
+    inputs_.pool.release(index);
+    vision_results_.push(result);
+  }
+}
+
+}  // namespace deepnav

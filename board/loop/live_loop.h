@@ -1,0 +1,69 @@
+#pragma once
+#include <atomic>
+#include <cstdint>
+#include <mutex>
+#include <string>
+#include <thread>
+
+#include "board/config/board_config.h"
+#include "board/loop/nav_core.h"
+#include "board/loop/scheduler.h"
+#include "drivers/buffers/live_inputs.h"
+#include "drivers/recording/queued_recorder.h"
+#include "vision/pipeline/vision_pipeline.h"
+
+namespace deepnav {
+
+// The vehicle's runtime: a fixed-rate nav loop thread, a vision worker thread and the recorder thread,
+// around one NavCore. Drivers (live or replay) push into inputs(); the loop merges the rings in time
+// order every tick. Everything is allocated in init(); the steady state neither allocates, blocks on
+// I/O nor throws.
+class LiveLoop {
+ public:
+  LiveLoop() = default;
+  ~LiveLoop() { stop(nullptr); }
+  LiveLoop(const LiveLoop&) = delete;
+  LiveLoop& operator=(const LiveLoop&) = delete;
+
+  // recording_path empty: no recording.
+  bool init(const BoardConfig& config, const std::string& board_text, const std::string& recording_path,
+            std::string* error);
+  LiveInputs& inputs() { return inputs_; }
+
+  // Starts the threads. The loop's clock is t_us = monotonicUs() + clock_offset_us (0 on the vehicle; a
+  // replay maps the recording's clock onto now).
+  bool start(TimeUs clock_offset_us, std::string* error);
+  // Stops the threads after the current tick, drains the recorder and closes the recording.
+  bool stop(std::string* error);
+
+  LoopStats stats() const { return scheduler_.stats(); }
+  NavSolution latest() const;
+  InputCounters counters() const;
+  std::uint64_t recorderDrops() const { return recorder_.dropped(); }
+
+ private:
+  void loopThread();
+  void visionThread();
+  void runTick(TimeUs t_us);
+  bool consumeOldest(TimeUs t_us);
+  void publish(const NavSolution& s);
+
+  BoardConfig config_{};
+  LiveInputs inputs_;
+  SpscRing<VisionResult> vision_results_;
+  QueuedRecorder recorder_;
+  RecordSink* sink_ = nullptr;
+  NavCore core_;
+  VisionPipeline vision_;
+  Scheduler scheduler_;
+  int nav_task_ = -1, stats_task_ = -1, vision_task_ = -1;
+  TimeUs clock_offset_us_ = 0;
+  std::atomic<bool> running_{false};
+  std::thread loop_thread_, vision_thread_;
+  mutable std::mutex latest_mutex_;  // guards latest_ and counters_ copies for readers off the loop
+  NavSolution latest_;
+  InputCounters counters_;
+  bool recording_ = false;
+};
+
+}  // namespace deepnav

@@ -1,0 +1,62 @@
+#include "board/replay/realtime_replay.h"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <thread>
+
+#include "board/loop/live_loop.h"
+#include "drivers/clock/monotonic_clock.h"
+#include "drivers/replay/replay_source.h"
+
+namespace deepnav {
+namespace {
+
+constexpr TimeUs kStartDelayUs = 200'000;  // time for the threads to start before the first sample
+constexpr TimeUs kDrainUs = 500'000;       // let the loop consume the last samples and vision results
+
+}  // namespace
+
+bool runRealtimeReplay(const ReplayOptions& o, ReplaySummary* summary, std::string* error) {
+  RecordingReader reader;
+  if (!reader.open(o.input_path, error)) return false;
+  BoardConfig config;
+  std::string board_text;
+  if (!loadReplayBoard(o.board_path, reader, o.input_path, &config, &board_text, error)) return false;
+  std::error_code ec;
+  std::filesystem::create_directories(o.out_dir, ec);
+  const std::string live_path = o.out_dir + "/live.mcap";
+  auto loop = std::make_unique<LiveLoop>();
+  if (!loop->init(config, board_text, live_path, error)) return false;
+  ReplaySource source;
+  if (!source.open(o.input_path, error)) return false;
+  const TimeUs offset = source.firstTimeUs() - (monotonicUs() + kStartDelayUs);
+  if (!loop->start(offset, error)) return false;
+  source.start(&loop->inputs(), offset);
+  TimeUs next_report = source.firstTimeUs();
+  while (!source.finished() || monotonicUs() + offset < source.lastTimeUs() + kDrainUs) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    const TimeUs t = monotonicUs() + offset;
+    if (o.progress && t >= next_report) {
+      std::fprintf(stderr, "replay (real time): %.0f / %.0f s\n", usToS(t - source.firstTimeUs()),
+                   usToS(source.lastTimeUs() - source.firstTimeUs()));
+      next_report += 10 * kUsPerS;
+    }
+  }
+  source.stop();
+  const LoopStats live_stats = loop->stats();
+  const std::uint64_t drops = loop->recorderDrops() + source.refused();
+  if (!loop->stop(error)) return false;
+  ReplayOptions bench = o;
+  bench.input_path = live_path;
+  bench.board_path.clear();
+  bench.rerun = false;
+  bench.realtime = false;
+  if (!runBenchReplay(bench, summary, error)) return false;
+  summary->loop = live_stats;
+  if (!source.error().empty()) summary->warnings.push_back(source.error());
+  if (drops > 0) summary->warnings.push_back(std::to_string(drops) + " samples or records refused by full queues");
+  return true;
+}
+
+}  // namespace deepnav

@@ -1,0 +1,36 @@
+#pragma once
+#include <cstddef>
+
+#include "drivers/buffers/frame_pool.h"
+#include "drivers/buffers/spsc_ring.h"
+#include "nav/types/input_sample.h"
+
+namespace deepnav {
+
+// Capacities of the live input buffers, from the board config.
+struct LiveInputCapacities {
+  std::size_t imu = 512, dvl = 64, heading = 64, attitude = 64, depth = 64;
+  std::size_t frames = 6;
+  int width_px = 688, height_px = 516, channels = 1;
+};
+
+// Everything drivers hand to the nav loop: one single-producer/single-consumer ring per sensor (each
+// fed by one driver thread) and the stereo frame pool, whose filled slots travel by index to the vision
+// worker. Allocated once at start-up; never resized.
+struct LiveInputs {
+  SpscRing<ImuSample> imu;
+  SpscRing<DvlSample> dvl;
+  SpscRing<HeadingSample> heading;
+  SpscRing<AttitudeSample> attitude;
+  SpscRing<DepthSample> depth;
+  FramePool pool;
+  SpscRing<int> frames;  // filled pool slots, capture order
+
+  bool allocate(const LiveInputCapacities& c) {
+    return imu.allocate(c.imu) && dvl.allocate(c.dvl) && heading.allocate(c.heading) &&
+           attitude.allocate(c.attitude) && depth.allocate(c.depth) &&
+           pool.allocate(c.frames, c.width_px, c.height_px, c.channels) && frames.allocate(c.frames);
+  }
+};
+
+}  // namespace deepnav
