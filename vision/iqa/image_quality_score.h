@@ -3,7 +3,7 @@
 
 namespace deepnav {
 
-// Combined image quality m̄_I(t) of the DexROV navigation paper (IROS 2019, sec. "image quality
+// Combined image quality m̄_I(t) of the DexROV navigation paper (IROS 2019, "image quality
 // assessment"): the mean of the three normalised MDM features (f1, f2, f3/8) and the ORB tracking
 // ratio min(1, tracked_orb / orb_max). The ORB term makes the score fall when the scene has no
 // texture the visual odometry can use, which MDM's global contrast alone cannot see.

@@ -25,7 +25,7 @@ double pow8(double x) {
   return x * x;
 }
 
-// Eq. 4-6 of the paper from a histogram of 8-bit values: ((mean((J - mean J)^64))^(1/64))^(1/4)
+// The paper's deviation feature from a histogram of 8-bit values: ((mean((J - mean J)^64))^(1/64))^(1/4)
 // with J = I^8, and I = v/255 or its complement 1 - v/255.
 double deviationFeature(const std::array<std::uint32_t, kLevels>& count, double total,
                         bool complement) {

@@ -12,8 +12,8 @@ namespace deepnav {
 // in Octave, /work/shared/data/iqa/mdm_reference.txt):
 //   - subsample both axes with step max(2, round(min(h, w) / 512)), starting at the first pixel;
 //   - f1 = (mean((I^8 - mean(I^8))^64))^(1/64), then f1^(1/4), with I in [0, 1] taken over every
-//     sample of every colour channel pooled together (paper eq. 4-6, q = 8, p = 64);
-//   - f2 = the same on the complement 1 - I (eq. 7);
+//     sample of every colour channel pooled together (the paper's moments with q = 8, p = 64);
+//   - f2 = the same on the complement 1 - I;
 //   - f3 = entropy in bits of the 256-bin grey histogram, the grey level being Octave's rgb2gray
 //     (0.298936 R + 0.587043 G + 0.114021 B, rounded) for colour input; the paper uses f3 / 8.
 struct MdmScore {

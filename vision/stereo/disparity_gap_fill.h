@@ -3,7 +3,7 @@
 
 namespace deepnav {
 
-// Gap interpolation (Geiger et al. 2010, sec. 4), along rows then along columns: an invalid run
+// Gap interpolation (post-processing of Geiger et al. 2010), along rows then along columns: an invalid run
 // of at most max_gap_px between two valid disparities d0, d1 is filled with their linear
 // interpolation when they agree within 3 px (the gap lies on one surface) and otherwise with
 // min(d0, d1): a hole between two surfaces is usually the occluded background.

@@ -9,7 +9,7 @@ namespace deepnav {
 // Removes small segments (speckles): 4-connected regions of valid disparities whose neighbours
 // differ by at most sim_px and which cover fewer than min_size_px pixels are set invalid (-1).
 // Such islands are almost always mismatches in texture-poor or occluded areas (Geiger et al.
-// 2010, sec. 4). Label and stack buffers are allocated once.
+// 2010, post-processing). Label and stack buffers are allocated once.
 class DisparitySpeckleFilter {
  public:
   bool allocate(int width_px, int height_px);

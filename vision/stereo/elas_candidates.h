@@ -6,7 +6,7 @@
 
 namespace deepnav {
 
-// Disparity candidates from nearby support points (Geiger et al. 2010, sec. 3.2, the "d in N_S"
+// Disparity candidates from nearby support points (Geiger et al. 2010, the "d in N_S"
 // part of the prior): the image is cut into cells of grid_size_px; a cell's candidates are the
 // support disparities, +-1, of every support point in the cell and its eight neighbours. They let
 // the dense matcher jump to a surface the piecewise-planar mean misses (depth edges, thin objects).

@@ -6,7 +6,7 @@
 
 namespace deepnav {
 
-// ELAS descriptor image (Geiger et al. 2010, sec. 3): per pixel, 16 bytes of horizontal and
+// ELAS descriptor image (Geiger et al. 2010): per pixel, 16 bytes of horizontal and
 // vertical 3x3 Sobel responses sampled sparsely over a 9x9 window, each stored as
 // saturate(response / 2^shift + 128). The l1 distance of two descriptors is the matching cost.
 // Sobel responses ignore the brightness offset between the two cameras.

@@ -3,16 +3,16 @@
 namespace deepnav {
 
 // Parameters of ElasDisparity. Names follow Geiger, Roser & Urtasun, "Efficient Large-Scale
-// Stereo Matching", ACCV 2010 (sections in brackets). Defaults are for general use on low-texture
+// Stereo Matching", ACCV 2010. Defaults are for general use on low-texture
 // scenes; nothing is tuned to a particular data set.
 struct ElasParams {
   int num_disparities = 64;  // d in [0, num_disparities), at most 256
 
-  // Descriptor [sec. 3]: 3x3 Sobel responses are divided by 2^sobel_shift before saturation to
+  // Descriptor: 3x3 Sobel responses are divided by 2^sobel_shift before saturation to
   // 8 bits, so a small shift keeps the weak gradients of low-contrast (underwater) images.
   int sobel_shift = 2;
 
-  // Support points [sec. 3.1]: matched on a regular grid over the full disparity range.
+  // Support points: matched on a regular grid over the full disparity range.
   int support_step_px = 5;         // grid spacing
   int support_texture = 10;        // minimum descriptor texture (l1 norm about zero gradient)
   float support_ratio = 0.85f;     // best cost must be < ratio * second-best cost (uniqueness)
@@ -28,16 +28,16 @@ struct ElasParams {
   int redundant_window_cells = 5;
   int redundant_threshold_px = 1;
 
-  // Prior [sec. 3.2]: p(d | S) ∝ gamma + exp(-(d - mu)^2 / (2 sigma^2)) within sradius_px of the
-  // triangulated plane mu, or d one of the support disparities of the grid cell (eq. 2).
+  // Prior: p(d | S, o) ∝ gamma + exp(-(d - mu)^2 / (2 sigma^2)) within sradius_px of the
+  // triangulated plane mu, or d one of the support disparities of the grid cell.
   int grid_size_px = 20;
-  float beta = 0.02f;   // likelihood ∝ exp(-beta * l1 distance of descriptors) (eq. 4)
+  float beta = 0.02f;   // likelihood ∝ exp(-beta * l1 distance of descriptors)
   float gamma = 3.0f;
   float sigma_px = 1.0f;
   int sradius_px = 2;
   int match_texture = 1;  // pixels with less descriptor texture get no disparity
 
-  // Post-processing [sec. 4]
+  // Post-processing
   int lr_threshold_px = 2;       // left-right consistency of the dense maps
   int speckle_size_px = 200;     // connected segments smaller than this are removed
   float speckle_sim_px = 1.0f;   // neighbours closer than this belong to one segment

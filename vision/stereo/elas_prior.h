@@ -8,7 +8,7 @@
 
 namespace deepnav {
 
-// Piecewise-planar disparity prior mu(u, v) of ELAS (Geiger et al. 2010, sec. 3.2): the Delaunay
+// Piecewise-planar disparity prior mu(u, v) of ELAS (Geiger et al. 2010): the Delaunay
 // triangulation of the support points, each triangle a plane d = a u + b v + c, rasterised into a
 // per-pixel map. The four image corners are added with the disparity of the nearest support point
 // so that the mesh covers the whole image.

@@ -69,7 +69,7 @@ void ElasSupport::compute(const ElasDescriptorImage& left, const ElasDescriptorI
   collectPoints();
 }
 
-// Full-range match left -> right, then right -> left from the matched pixel (sec. 3.1).
+// Full-range match left -> right, then right -> left from the matched pixel.
 int ElasSupport::matchGridPoint(const ElasDescriptorImage& left, const ElasDescriptorImage& right,
                                 int u, int v) const {
   const std::uint8_t* dl = left.at(u, v);

@@ -14,7 +14,7 @@ struct SupportPoint {
   int d_px = 0;
 };
 
-// Support points of ELAS (Geiger et al. 2010, sec. 3.1): descriptors matched over the full
+// Support points of ELAS (Geiger et al. 2010): descriptors matched over the full
 // disparity range on a regular grid, kept only when the match is unique (best < ratio * second
 // best, away from the best's own neighbours) and left-right consistent; then isolated points,
 // whose disparity few neighbours share, are removed.
