@@ -1,15 +1,14 @@
-#include "vision/iqa/mdm.h"
+#include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <opencv2/imgcodecs.hpp>
 #include <sstream>
 #include <string>
 
-#include <gtest/gtest.h>
-#include <opencv2/imgcodecs.hpp>
-
 #include "vision/iqa/image_quality_score.h"
+#include "vision/iqa/mdm.h"
 
 namespace deepnav {
 namespace {
@@ -69,7 +68,8 @@ TEST(Mdm, LowContrastScoresBelowFullRange) {
   MdmScore a, b;
   ASSERT_TRUE(computeMdm(full, &a, &ws));
   ASSERT_TRUE(computeMdm(squeezed, &b, &ws));
-  // THEN the squeezed ramp scores lower on every feature (entropy of 128 vs 41 levels: 7 vs ~5.4 bits)
+  // THEN the squeezed ramp scores lower on every feature (entropy of 128 vs 41 levels: 7 vs ~5.4
+  // bits)
   EXPECT_LT(b.f1, a.f1);
   EXPECT_LT(b.f2, a.f2);
   EXPECT_NEAR(a.f3_bits, 7.0, 1e-9);  // step 2 keeps the 128 even levels, uniformly

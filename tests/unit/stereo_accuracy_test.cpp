@@ -1,8 +1,8 @@
 #include "vision/stereo/stereo_accuracy.h"
 
-#include <cmath>
-
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include "vision/stereo/disparity_estimator.h"
 
@@ -13,11 +13,11 @@ TEST(StereoAccuracy, CountsD1OneMissingAndBad1) {
   // GIVEN ground truth 40 px everywhere on a 10x10 map
   const cv::Mat truth(10, 10, CV_32F, cv::Scalar(40.0f));
   cv::Mat estimate = truth.clone();
-  estimate.at<float>(0, 0) = 43.5f;               // 3.5 px = 8.75 %: a D1 outlier
-  estimate.at<float>(0, 1) = 41.5f;               // 1.5 px: bad1 only
-  estimate.at<float>(0, 2) = kInvalidDisparity;   // missing: wrong for both
-  estimate.at<float>(0, 3) = std::nanf("");       // NaN: missing too
-  estimate.at<float>(0, 4) = 40.9f;               // fine
+  estimate.at<float>(0, 0) = 43.5f;              // 3.5 px = 8.75 %: a D1 outlier
+  estimate.at<float>(0, 1) = 41.5f;              // 1.5 px: bad1 only
+  estimate.at<float>(0, 2) = kInvalidDisparity;  // missing: wrong for both
+  estimate.at<float>(0, 3) = std::nanf("");      // NaN: missing too
+  estimate.at<float>(0, 4) = 40.9f;              // fine
   // WHEN evaluated over all pixels
   const StereoAccuracy acc = evaluateDisparity(estimate, truth, cv::Mat());
   // THEN

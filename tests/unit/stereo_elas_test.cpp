@@ -1,10 +1,9 @@
-#include "vision/stereo/elas_disparity.h"
+#include <gtest/gtest.h>
 
 #include <cmath>
-
-#include <gtest/gtest.h>
 #include <opencv2/imgproc.hpp>
 
+#include "vision/stereo/elas_disparity.h"
 #include "vision/stereo/stereo_accuracy.h"
 
 namespace deepnav {
@@ -16,7 +15,9 @@ struct SyntheticPair {
   cv::Mat left, right, truth_px;
 };
 
-float backgroundDisparity(float u, int width) { return 8.0f + 12.0f * u / static_cast<float>(width); }
+float backgroundDisparity(float u, int width) {
+  return 8.0f + 12.0f * u / static_cast<float>(width);
+}
 
 SyntheticPair makePair(int width, int height) {
   cv::Mat texture(height, width + 64, CV_8UC1), box_texture(height, width + 64, CV_8UC1);
@@ -38,8 +39,8 @@ SyntheticPair makePair(int width, int height) {
     for (int u = 0; u < width; ++u) {
       const bool in_box = box.contains(cv::Point(u, v));
       pair.truth_px.at<float>(v, u) = in_box ? kBoxDisparity : backgroundDisparity(u, width);
-      pair.left.at<std::uint8_t>(v, u) = in_box ? box_texture.at<std::uint8_t>(v, u)
-                                                : texture.at<std::uint8_t>(v, u + 32);
+      pair.left.at<std::uint8_t>(v, u) =
+          in_box ? box_texture.at<std::uint8_t>(v, u) : texture.at<std::uint8_t>(v, u + 32);
       // right pixel ur sees the box if ur + 30 is in the box, else the background point
       // u_left with u_left - d(u_left) = ur
       const int u_box = u + static_cast<int>(kBoxDisparity);
@@ -47,7 +48,8 @@ SyntheticPair makePair(int width, int height) {
       if (box.contains(cv::Point(u_box, v))) {
         value = box_texture.at<std::uint8_t>(v, u_box);
       } else {
-        const float u_left = (static_cast<float>(u) + 8.0f) / (1.0f - 12.0f / static_cast<float>(width));
+        const float u_left =
+            (static_cast<float>(u) + 8.0f) / (1.0f - 12.0f / static_cast<float>(width));
         value = sample(texture, v, u_left + 32.0f);
       }
       pair.right.at<std::uint8_t>(v, u) = cv::saturate_cast<std::uint8_t>(value);

@@ -1,13 +1,13 @@
 // Accuracy of the disparity backends on real data: Middlebury 2001 tsukuba and venus
 // (Scharstein & Szeliski 2002), evaluated on the non-occluded pixels with the KITTI D1 rate.
+#include <gtest/gtest.h>
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <string>
-
-#include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
+#include <string>
 
 #include "vision/stereo/elas_disparity.h"
 #include "vision/stereo/sgbm_disparity.h"
@@ -22,10 +22,10 @@ std::filesystem::path sharedDataDir() {
 }
 
 struct MiddleburyPair {
-  cv::Mat left, right;   // BGR
-  cv::Mat truth_px;      // CV_32F, 0 = unknown
-  cv::Mat nonocc;        // CV_8UC1, 255 = evaluated
-  int range_px = 0;      // disparity range declared by the data set
+  cv::Mat left, right;  // BGR
+  cv::Mat truth_px;     // CV_32F, 0 = unknown
+  cv::Mat nonocc;       // CV_8UC1, 255 = evaluated
+  int range_px = 0;     // disparity range declared by the data set
 };
 
 // info.txt: ground-truth scale, then disparity range.
@@ -38,7 +38,8 @@ bool loadPair(const std::string& name, MiddleburyPair* pair) {
   pair->right = cv::imread((dir / "imR.png").string(), cv::IMREAD_COLOR);
   const cv::Mat truth = cv::imread((dir / "groundtruth.png").string(), cv::IMREAD_GRAYSCALE);
   pair->nonocc = cv::imread((dir / "nonocc.png").string(), cv::IMREAD_GRAYSCALE);
-  if (pair->left.empty() || pair->right.empty() || truth.empty() || pair->nonocc.empty()) return false;
+  if (pair->left.empty() || pair->right.empty() || truth.empty() || pair->nonocc.empty())
+    return false;
   truth.convertTo(pair->truth_px, CV_32F, 1.0 / scale);
   return true;
 }

@@ -25,8 +25,8 @@ TEST(DisparityLeftRight, KeepsConsistentAndDropsInconsistent) {
 
 TEST(DisparitySpeckle, RemovesSmallSegmentsOnly) {
   cv::Mat d(20, 20, CV_32F, cv::Scalar(10.0f));
-  d(cv::Rect(2, 2, 3, 3)).setTo(30.0f);     // 9 px island
-  d(cv::Rect(10, 10, 8, 8)).setTo(20.0f);   // 64 px segment
+  d(cv::Rect(2, 2, 3, 3)).setTo(30.0f);    // 9 px island
+  d(cv::Rect(10, 10, 8, 8)).setTo(20.0f);  // 64 px segment
   DisparitySpeckleFilter filter;
   ASSERT_TRUE(filter.allocate(20, 20));
   filter.apply(50, 1.0f, &d);
@@ -38,8 +38,8 @@ TEST(DisparitySpeckle, RemovesSmallSegmentsOnly) {
 TEST(DisparityGapFill, InterpolatesOneSurfaceAndTakesBackgroundBetweenTwo) {
   cv::Mat d(1, 12, CV_32F, cv::Scalar(kInvalidDisparity));
   d.at<float>(0, 0) = 10.0f;
-  d.at<float>(0, 4) = 12.0f;   // gap 1..3 on one surface: linear
-  d.at<float>(0, 6) = 30.0f;   // gap 5 between 12 and 30: background (12)
+  d.at<float>(0, 4) = 12.0f;  // gap 1..3 on one surface: linear
+  d.at<float>(0, 6) = 30.0f;  // gap 5 between 12 and 30: background (12)
   // 7..11 open to the border
   fillDisparityGaps(3, false, &d);
   EXPECT_FLOAT_EQ(d.at<float>(0, 2), 11.0f);

@@ -1,5 +1,6 @@
 // MDM image quality at the DexROV camera size (688x516). Target: <= 3 ms per image on one core.
 #include <benchmark/benchmark.h>
+
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 

@@ -1,6 +1,7 @@
 // Dense disparity at the DexROV camera size (688x516), 64 disparities, one core (OpenCV threading
 // off). Target: ELAS <= 60 ms per pair.
 #include <benchmark/benchmark.h>
+
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
 

@@ -25,8 +25,8 @@ double pow8(double x) {
   return x * x;
 }
 
-// The paper's deviation feature from a histogram of 8-bit values: ((mean((J - mean J)^64))^(1/64))^(1/4)
-// with J = I^8, and I = v/255 or its complement 1 - v/255.
+// The paper's deviation feature from a histogram of 8-bit values: ((mean((J - mean
+// J)^64))^(1/64))^(1/4) with J = I^8, and I = v/255 or its complement 1 - v/255.
 double deviationFeature(const std::array<std::uint32_t, kLevels>& count, double total,
                         bool complement) {
   double moment_q[kLevels];

@@ -1,7 +1,6 @@
 #pragma once
 #include <array>
 #include <cstdint>
-
 #include <opencv2/core.hpp>
 
 namespace deepnav {

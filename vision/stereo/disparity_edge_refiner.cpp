@@ -106,7 +106,8 @@ void DisparityEdgeRefiner::apply(const cv::Mat& guide, int radius_px, float jump
                                  cv::Mat* disparity_px) {
   if (radius_px < 1 || sigma <= 0.0f) return;
   if (sigma != lut_sigma_) {
-    for (int i = 0; i <= kMaxColourDiff; ++i) weight_lut_[i] = std::exp(-static_cast<float>(i) / sigma);
+    for (int i = 0; i <= kMaxColourDiff; ++i)
+      weight_lut_[i] = std::exp(-static_cast<float>(i) / sigma);
     lut_sigma_ = sigma;
   }
   disparity_px->copyTo(source_px_);

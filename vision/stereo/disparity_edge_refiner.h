@@ -1,8 +1,7 @@
 #pragma once
 #include <cstdint>
-#include <vector>
-
 #include <opencv2/core.hpp>
+#include <vector>
 
 namespace deepnav {
 
@@ -32,13 +31,13 @@ class DisparityEdgeRefiner {
   int width_px_ = 0;
   int height_px_ = 0;
   int bins_ = 0;
-  std::vector<std::uint8_t> jump_;   // 1 where a 4-neighbour differs by more than the jump
-  std::vector<std::uint8_t> band_;   // jump_ dilated by the radius (rows, then columns)
-  std::vector<std::uint8_t> rows_;   // scratch of the separable dilation
-  std::vector<float> weight_lut_;    // exp(-diff / sigma), diff = 0 .. 765
-  std::vector<float> hist_w_;        // per integer disparity: sum of weights
-  std::vector<float> hist_wd_;       // per integer disparity: sum of weight * d
-  cv::Mat source_px_;                // the input map, read while the output is written
+  std::vector<std::uint8_t> jump_;  // 1 where a 4-neighbour differs by more than the jump
+  std::vector<std::uint8_t> band_;  // jump_ dilated by the radius (rows, then columns)
+  std::vector<std::uint8_t> rows_;  // scratch of the separable dilation
+  std::vector<float> weight_lut_;   // exp(-diff / sigma), diff = 0 .. 765
+  std::vector<float> hist_w_;       // per integer disparity: sum of weights
+  std::vector<float> hist_wd_;      // per integer disparity: sum of weight * d
+  cv::Mat source_px_;               // the input map, read while the output is written
   float lut_sigma_ = -1.0f;
 };
 

@@ -4,9 +4,9 @@
 namespace deepnav {
 
 // Disparity maps are CV_32FC1 in pixels, left image as reference: the left pixel (u, v) matches
-// the right pixel (u - d, v). A pixel without a disparity holds a negative value (kInvalidDisparity);
-// test with `d < 0`. Negative rather than NaN so that integer-minded filters and comparisons
-// (d >= 0, std::max) stay well defined.
+// the right pixel (u - d, v). A pixel without a disparity holds a negative value
+// (kInvalidDisparity); test with `d < 0`. Negative rather than NaN so that integer-minded filters
+// and comparisons (d >= 0, std::max) stay well defined.
 constexpr float kInvalidDisparity = -1.0f;
 
 // One dense stereo matcher on a rectified pair. Backends: ElasDisparity (own ELAS), SgbmDisparity

@@ -15,8 +15,8 @@ void checkLeftRight(const cv::Mat& right_px, float threshold_px, cv::Mat* left_p
       const float d = left[u];
       if (d < 0.0f) continue;
       const int ur = static_cast<int>(std::lround(static_cast<float>(u) - d));
-      const bool ok = ur >= 0 && ur < width && right[ur] >= 0.0f &&
-                      std::fabs(right[ur] - d) <= threshold_px;
+      const bool ok =
+          ur >= 0 && ur < width && right[ur] >= 0.0f && std::fabs(right[ur] - d) <= threshold_px;
       if (!ok) left[u] = kInvalidDisparity;
     }
   }

@@ -23,8 +23,9 @@ void ElasCandidates::build(const std::vector<SupportPoint>& points, bool view_ri
   for (const SupportPoint& p : points) {
     const int u = view_right ? p.u_px - p.d_px : p.u_px;
     if (u < 0) continue;
-    std::uint64_t* mask = own_.data() +
-                          static_cast<std::size_t>((p.v_px / grid_size_px_) * cols_ + u / grid_size_px_) * kWords;
+    std::uint64_t* mask =
+        own_.data() +
+        static_cast<std::size_t>((p.v_px / grid_size_px_) * cols_ + u / grid_size_px_) * kWords;
     for (int d = std::max(0, p.d_px - 1); d <= std::min(num_disparities_ - 1, p.d_px + 1); ++d) {
       mask[d >> 6] |= std::uint64_t{1} << (d & 63);
     }
@@ -34,7 +35,8 @@ void ElasCandidates::build(const std::vector<SupportPoint>& points, bool view_ri
       std::uint64_t* out = merged_.data() + static_cast<std::size_t>(r * cols_ + c) * kWords;
       for (int r2 = std::max(0, r - 1); r2 <= std::min(rows_ - 1, r + 1); ++r2) {
         for (int c2 = std::max(0, c - 1); c2 <= std::min(cols_ - 1, c + 1); ++c2) {
-          const std::uint64_t* in = own_.data() + static_cast<std::size_t>(r2 * cols_ + c2) * kWords;
+          const std::uint64_t* in =
+              own_.data() + static_cast<std::size_t>(r2 * cols_ + c2) * kWords;
           for (int w = 0; w < kWords; ++w) out[w] |= in[w];
         }
       }

@@ -20,7 +20,8 @@ bool ElasDenseMatcher::allocate(const ElasParams& params) {
   for (std::size_t k = 0; k < prior_bonus_.size(); ++k) {
     const double x = static_cast<double>(k) / kPriorSteps;
     const double gauss = std::exp(-x * x / (2.0 * params.sigma_px * params.sigma_px));
-    prior_bonus_[k] = static_cast<int>(std::lround(-std::log1p(gauss / params.gamma) / params.beta));
+    prior_bonus_[k] =
+        static_cast<int>(std::lround(-std::log1p(gauss / params.gamma) / params.beta));
   }
   return true;
 }
@@ -100,7 +101,8 @@ void ElasDenseMatcher::matchRow(const ElasDescriptorImage& ref, const ElasDescri
       const int c_plus = sad16(f_ref, f_other + (best_d + 1) * dir) + priorBonus(best_d + 1, mu);
       const int curvature = c_minus - 2 * best_cost + c_plus;
       if (curvature > 0) {
-        subpixel[u] = std::clamp(0.5f * static_cast<float>(c_minus - c_plus) / curvature, -0.5f, 0.5f);
+        subpixel[u] =
+            std::clamp(0.5f * static_cast<float>(c_minus - c_plus) / curvature, -0.5f, 0.5f);
       }
     }
   }

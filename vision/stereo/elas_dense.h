@@ -1,7 +1,6 @@
 #pragma once
-#include <vector>
-
 #include <opencv2/core.hpp>
+#include <vector>
 
 #include "vision/stereo/elas_candidates.h"
 #include "vision/stereo/elas_descriptor.h"
@@ -11,8 +10,8 @@ namespace deepnav {
 
 // Dense MAP disparity of ELAS (Geiger et al. 2010, MAP disparity): for every pixel,
 //   d* = argmin_d  beta * |f_ref - f_other(d)|_1  -  log(gamma + exp(-(d - mu)^2 / (2 sigma^2)))
-// (the negative log posterior) over the candidates d with |d - mu| <= sradius or d in the cell's support set N_S.
-// Costs are kept in descriptor units: the prior becomes an integer bonus
+// (the negative log posterior) over the candidates d with |d - mu| <= sradius or d in the cell's
+// support set N_S. Costs are kept in descriptor units: the prior becomes an integer bonus
 //   P(x) = -log(1 + exp(-x^2 / (2 sigma^2)) / gamma) / beta   for x = |d - mu| <= sradius
 // (the constant log(gamma) shared by all candidates dropped), 0 elsewhere.
 class ElasDenseMatcher {

@@ -12,8 +12,8 @@ namespace {
 struct Tap {
   int du, dv;
 };
-constexpr Tap kGxTaps[11] = {{-4, 0}, {-2, 0}, {0, 0},  {2, 0},  {4, 0},  {-2, -2},
-                             {0, -2}, {2, -2}, {-2, 2}, {0, 2},  {2, 2}};
+constexpr Tap kGxTaps[11] = {{-4, 0}, {-2, 0}, {0, 0},  {2, 0}, {4, 0}, {-2, -2},
+                             {0, -2}, {2, -2}, {-2, 2}, {0, 2}, {2, 2}};
 constexpr Tap kGyTaps[5] = {{0, 0}, {-2, 0}, {2, 0}, {0, -2}, {0, 2}};
 
 alignas(16) constexpr std::uint8_t kFlat[16] = {128, 128, 128, 128, 128, 128, 128, 128,
@@ -73,8 +73,10 @@ void ElasDescriptorImage::gatherRow(int v) {
   std::uint8_t* out = descriptors_.data() + static_cast<std::size_t>(v) * w * kBytes;
   const bool interior_row = v >= kReachV && v < h - kReachV;
   std::ptrdiff_t gx_offset[11], gy_offset[5];
-  for (int k = 0; k < 11; ++k) gx_offset[k] = static_cast<std::ptrdiff_t>(kGxTaps[k].dv) * w + kGxTaps[k].du;
-  for (int k = 0; k < 5; ++k) gy_offset[k] = static_cast<std::ptrdiff_t>(kGyTaps[k].dv) * w + kGyTaps[k].du;
+  for (int k = 0; k < 11; ++k)
+    gx_offset[k] = static_cast<std::ptrdiff_t>(kGxTaps[k].dv) * w + kGxTaps[k].du;
+  for (int k = 0; k < 5; ++k)
+    gy_offset[k] = static_cast<std::ptrdiff_t>(kGyTaps[k].dv) * w + kGyTaps[k].du;
   for (int u = 0; u < w; ++u, out += kBytes) {
     const std::size_t centre = static_cast<std::size_t>(v) * w + u;
     if (interior_row && u >= kReachU && u < w - kReachU) {

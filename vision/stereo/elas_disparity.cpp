@@ -1,7 +1,6 @@
 #include "vision/stereo/elas_disparity.h"
 
 #include <algorithm>
-
 #include <opencv2/imgproc.hpp>
 
 #include "vision/stereo/disparity_gap_fill.h"
@@ -30,14 +29,16 @@ bool ElasDisparity::init(const ElasParams& params, int width_px, int height_px) 
   height_px_ = height_px;
   const int step = std::max(1, params.support_step_px);
   const int max_points = ((width_px - 1) / step + 1) * ((height_px - 1) / step + 1);
-  ready_ = desc_left_.allocate(width_px, height_px) && desc_right_.allocate(width_px, height_px) &&
-           support_.allocate(params, width_px, height_px) &&
-           prior_left_.allocate(width_px, height_px, max_points) &&
-           prior_right_.allocate(width_px, height_px, max_points) &&
-           candidates_left_.allocate(width_px, height_px, params.grid_size_px, params.num_disparities) &&
-           candidates_right_.allocate(width_px, height_px, params.grid_size_px, params.num_disparities) &&
-           dense_.allocate(params) && speckle_.allocate(width_px, height_px) &&
-           refiner_.allocate(width_px, height_px, params.num_disparities);
+  ready_ =
+      desc_left_.allocate(width_px, height_px) && desc_right_.allocate(width_px, height_px) &&
+      support_.allocate(params, width_px, height_px) &&
+      prior_left_.allocate(width_px, height_px, max_points) &&
+      prior_right_.allocate(width_px, height_px, max_points) &&
+      candidates_left_.allocate(width_px, height_px, params.grid_size_px, params.num_disparities) &&
+      candidates_right_.allocate(width_px, height_px, params.grid_size_px,
+                                 params.num_disparities) &&
+      dense_.allocate(params) && speckle_.allocate(width_px, height_px) &&
+      refiner_.allocate(width_px, height_px, params.num_disparities);
   if (!ready_) return false;
   grey_left_.create(height_px, width_px, CV_8UC1);
   grey_right_.create(height_px, width_px, CV_8UC1);

@@ -13,10 +13,10 @@ struct ElasParams {
   int sobel_shift = 2;
 
   // Support points: matched on a regular grid over the full disparity range.
-  int support_step_px = 5;         // grid spacing
-  int support_texture = 10;        // minimum descriptor texture (l1 norm about zero gradient)
-  float support_ratio = 0.85f;     // best cost must be < ratio * second-best cost (uniqueness)
-  int support_lr_threshold_px = 2; // left-right agreement of a support match
+  int support_step_px = 5;          // grid spacing
+  int support_texture = 10;         // minimum descriptor texture (l1 norm about zero gradient)
+  float support_ratio = 0.85f;      // best cost must be < ratio * second-best cost (uniqueness)
+  int support_lr_threshold_px = 2;  // left-right agreement of a support match
   // A support point survives when at least incon_min_support others within incon_window_cells
   // grid cells have a disparity within incon_threshold_px of it (removes isolated outliers).
   int incon_window_cells = 5;
@@ -31,25 +31,25 @@ struct ElasParams {
   // Prior: p(d | S, o) ∝ gamma + exp(-(d - mu)^2 / (2 sigma^2)) within sradius_px of the
   // triangulated plane mu, or d one of the support disparities of the grid cell.
   int grid_size_px = 20;
-  float beta = 0.02f;   // likelihood ∝ exp(-beta * l1 distance of descriptors)
+  float beta = 0.02f;  // likelihood ∝ exp(-beta * l1 distance of descriptors)
   float gamma = 3.0f;
   float sigma_px = 1.0f;
   int sradius_px = 2;
   int match_texture = 1;  // pixels with less descriptor texture get no disparity
 
   // Post-processing
-  int lr_threshold_px = 2;       // left-right consistency of the dense maps
-  int speckle_size_px = 200;     // connected segments smaller than this are removed
-  float speckle_sim_px = 1.0f;   // neighbours closer than this belong to one segment
-  int ipol_gap_width_px = 3;     // gaps up to this width are interpolated along rows, columns
-  bool fill_all = false;         // then fill every remaining hole from its background side
-  bool subpixel = true;          // parabola through the costs at d-1, d, d+1
+  int lr_threshold_px = 2;      // left-right consistency of the dense maps
+  int speckle_size_px = 200;    // connected segments smaller than this are removed
+  float speckle_sim_px = 1.0f;  // neighbours closer than this belong to one segment
+  int ipol_gap_width_px = 3;    // gaps up to this width are interpolated along rows, columns
+  bool fill_all = false;        // then fill every remaining hole from its background side
+  bool subpixel = true;         // parabola through the costs at d-1, d, d+1
   // Edge-aware refinement (DisparityEdgeRefiner, beyond the paper): pixels within
   // refine_radius_px of a jump > refine_jump_px take the colour-weighted median of their window,
   // undoing the foreground fattening of window matching. refine_radius_px = 0 disables it.
   int refine_radius_px = 8;
   float refine_jump_px = 2.0f;
-  float refine_sigma = 10.0f;    // colour distance (sum of |dB|+|dG|+|dR|, or 3|dGrey|) scale
+  float refine_sigma = 10.0f;  // colour distance (sum of |dB|+|dG|+|dR|, or 3|dGrey|) scale
 
   // Robot preset: leave unmatched pixels invalid, fill small gaps only.
   static ElasParams robotics() { return ElasParams{}; }

@@ -74,7 +74,8 @@ void ElasPrior::rasterise(const cv::Vec6f& tri) {
   const float x[3] = {tri[0], tri[2], tri[4]};
   const float y[3] = {tri[1], tri[3], tri[5]};
   float d[3];
-  for (int i = 0; i < 3; ++i) d[i] = vertex_d_.at<float>(static_cast<int>(y[i]), static_cast<int>(x[i]));
+  for (int i = 0; i < 3; ++i)
+    d[i] = vertex_d_.at<float>(static_cast<int>(y[i]), static_cast<int>(x[i]));
   const float area = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
   if (std::fabs(area) < 1e-3f) return;
   // d = a u + b v + c by Cramer's rule on the three vertices
@@ -82,8 +83,10 @@ void ElasPrior::rasterise(const cv::Vec6f& tri) {
   const float b = (d[0] * (x[2] - x[1]) + d[1] * (x[0] - x[2]) + d[2] * (x[1] - x[0])) / area;
   const float c = d[0] - a * x[0] - b * y[0];
   constexpr float kTolerancePx = 1e-3f;
-  const int v_min = std::max(0, static_cast<int>(std::ceil(std::min({y[0], y[1], y[2]}) - kTolerancePx)));
-  const int v_max = std::min(height_px_ - 1, static_cast<int>(std::floor(std::max({y[0], y[1], y[2]}) + kTolerancePx)));
+  const int v_min =
+      std::max(0, static_cast<int>(std::ceil(std::min({y[0], y[1], y[2]}) - kTolerancePx)));
+  const int v_max = std::min(
+      height_px_ - 1, static_cast<int>(std::floor(std::max({y[0], y[1], y[2]}) + kTolerancePx)));
   for (int v = v_min; v <= v_max; ++v) {
     const float fv = static_cast<float>(v);
     float u_lo = -1e9f, u_hi = 1e9f;
@@ -95,7 +98,8 @@ void ElasPrior::rasterise(const cv::Vec6f& tri) {
       const float s = area > 0 ? 1.0f : -1.0f;
       // s * (ex (fv - yi) - ey (u - xi)) >= -tol  <=>  s*ey*u <= s*(ex (fv - yi) + ey xi) + tol
       const float k = s * ey;
-      const float rhs = s * (ex * (fv - y[i]) + ey * x[i]) + kTolerancePx * std::fabs(ey) + kTolerancePx;
+      const float rhs =
+          s * (ex * (fv - y[i]) + ey * x[i]) + kTolerancePx * std::fabs(ey) + kTolerancePx;
       if (std::fabs(k) < 1e-9f) {
         if (rhs < 0.0f) empty = true;
       } else if (k > 0) {

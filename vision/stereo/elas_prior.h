@@ -1,8 +1,7 @@
 #pragma once
-#include <vector>
-
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
+#include <vector>
 
 #include "vision/stereo/elas_support.h"
 

@@ -101,7 +101,8 @@ void ElasSupport::removeInconsistent() {
         }
       }
       // the count includes the point itself
-      if (agreeing - 1 >= params_.incon_min_support) filtered_d_[cell(gu, gv)] = grid_d_[cell(gu, gv)];
+      if (agreeing - 1 >= params_.incon_min_support)
+        filtered_d_[cell(gu, gv)] = grid_d_[cell(gu, gv)];
     }
   }
 }

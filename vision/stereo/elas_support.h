@@ -41,8 +41,8 @@ class ElasSupport {
   int height_px_ = 0;
   int grid_cols_ = 0;
   int grid_rows_ = 0;
-  std::vector<std::int16_t> grid_d_;     // disparity per grid node, -1 = none
-  std::vector<std::int16_t> filtered_d_; // after removing inconsistent nodes
+  std::vector<std::int16_t> grid_d_;      // disparity per grid node, -1 = none
+  std::vector<std::int16_t> filtered_d_;  // after removing inconsistent nodes
   std::vector<SupportPoint> points_;
   std::vector<SupportPoint> mesh_points_;
 };

@@ -11,7 +11,8 @@
 namespace deepnav {
 
 // Sum of absolute differences of two 16-byte descriptors: the l1 distance of ELAS's likelihood
-// (p(o_r | o_l, d) ∝ exp(-beta |f_l - f_r|_1), Geiger et al. 2010). One psadbw on x86-64, one vabd + vaddlv on aarch64.
+// (p(o_r | o_l, d) ∝ exp(-beta |f_l - f_r|_1), Geiger et al. 2010). One psadbw on x86-64, one vabd
+// + vaddlv on aarch64.
 inline int sad16(const std::uint8_t* a, const std::uint8_t* b) {
 #if defined(__SSE2__)
   const __m128i sum = _mm_sad_epu8(_mm_loadu_si128(reinterpret_cast<const __m128i*>(a)),

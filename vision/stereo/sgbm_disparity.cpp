@@ -26,11 +26,11 @@ bool SgbmDisparity::init(const SgbmParams& params, int width_px, int height_px) 
   height_px_ = height_px;
   const int area = params.block_size_px * params.block_size_px;
   // Matching runs on grey images (P1, P2 for one channel); colour only guides the WLS filter.
-  left_matcher_ = cv::StereoSGBM::create(
-      0, params_.num_disparities, params.block_size_px, params.p1_per_pixel * area,
-      params.p2_per_pixel * area, params.disp12_max_diff_px, params.pre_filter_cap,
-      params.uniqueness_ratio, params.speckle_window_px, params.speckle_range_px,
-      cv::StereoSGBM::MODE_SGBM_3WAY);
+  left_matcher_ = cv::StereoSGBM::create(0, params_.num_disparities, params.block_size_px,
+                                         params.p1_per_pixel * area, params.p2_per_pixel * area,
+                                         params.disp12_max_diff_px, params.pre_filter_cap,
+                                         params.uniqueness_ratio, params.speckle_window_px,
+                                         params.speckle_range_px, cv::StereoSGBM::MODE_SGBM_3WAY);
   if (params.wls) {
     wls_ = cv::ximgproc::createDisparityWLSFilter(left_matcher_);
     wls_->setLambda(params.wls_lambda);

@@ -9,17 +9,17 @@ namespace deepnav {
 
 // Parameters of SgbmDisparity (OpenCV StereoSGBM, Hirschmüller 2008, in MODE_SGBM_3WAY).
 struct SgbmParams {
-  int num_disparities = 64;   // rounded up to a multiple of 16 for OpenCV
-  int block_size_px = 5;      // odd
-  int p1_per_pixel = 8;       // P1 = p1_per_pixel * channels * block^2: small disparity changes
-  int p2_per_pixel = 32;      // P2 = p2_per_pixel * channels * block^2: depth discontinuities
-  int disp12_max_diff_px = 1; // left-right check
+  int num_disparities = 64;    // rounded up to a multiple of 16 for OpenCV
+  int block_size_px = 5;       // odd
+  int p1_per_pixel = 8;        // P1 = p1_per_pixel * channels * block^2: small disparity changes
+  int p2_per_pixel = 32;       // P2 = p2_per_pixel * channels * block^2: depth discontinuities
+  int disp12_max_diff_px = 1;  // left-right check
   int pre_filter_cap = 63;
   int uniqueness_ratio = 10;  // percent
   int speckle_window_px = 100;
   int speckle_range_px = 2;
-  bool wls = false;           // ximgproc weighted-least-squares filter (dense, edge-aware)
-  double wls_lambda = 8000.0; // smoothness strength
+  bool wls = false;            // ximgproc weighted-least-squares filter (dense, edge-aware)
+  double wls_lambda = 8000.0;  // smoothness strength
   double wls_sigma_color = 1.5;
 };
 
