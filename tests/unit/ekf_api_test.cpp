@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include "nav/ekf/ekf.h"
+#include "nav/ekf/heading_updater.h"
+#include "nav/ekf/imu_to_robot.h"
 #include "nav/ekf/initial_alignment.h"
 #include "nav/ekf/so3.h"
 
@@ -186,6 +188,41 @@ TEST(EkfApi, VarianceBoundsHoldDuringLongDeadReckoning) {
   EXPECT_TRUE(P.isApprox(P.transpose(), 0.0));
   using Mat15 = Eigen::Matrix<double, 15, 15>;
   EXPECT_EQ(Eigen::LLT<Mat15>(P).info(), Eigen::Success);
+}
+
+TEST(EkfApi, ImuMountingAndLeverArmAreCompensated) {
+  // GIVEN an IMU turned 90 deg about z, 0.5 m ahead of the robot origin, on a robot level and spinning at
+  // 0.4 rad/s about z and speeding up its spin at 0.1 rad/s^2
+  const Eigen::Quaterniond q_robot_imu(Eigen::AngleAxisd(std::numbers::pi / 2.0, Eigen::Vector3d::UnitZ()));
+  const Eigen::Vector3d r(0.5, 0.0, 0.0), w_prev(0.0, 0.0, 0.399), w(0.0, 0.0, 0.4);
+  const Eigen::Vector3d alpha = (w - w_prev) / 0.01;
+  // The IMU point sees gravity plus centripetal and tangential acceleration.
+  const Eigen::Vector3d f_point_robot = Eigen::Vector3d(0, 0, 9.80665) + alpha.cross(r) + w.cross(w.cross(r));
+  ImuSample s;
+  s.w_imu_radps = q_robot_imu.conjugate() * w;
+  s.f_imu_mps2 = q_robot_imu.conjugate() * f_point_robot;
+  // WHEN moved to the robot frame
+  const RobotImu u = imuToRobot(s, q_robot_imu, r, w_prev, 0.01);
+  // THEN the rate is the robot's and the specific force that of the robot origin (gravity only)
+  EXPECT_TRUE(u.w_robot_radps.isApprox(w, 1e-12));
+  EXPECT_TRUE(u.f_robot_mps2.isApprox(Eigen::Vector3d(0, 0, 9.80665), 1e-12));
+}
+
+TEST(EkfApi, CompassHeadingBecomesEnuYaw) {
+  // GIVEN a declination of +0.1 rad (east) and a compass bias of +0.02 rad
+  EkfConfig c;
+  c.magnetic_declination_rad = 0.1;
+  c.heading_bias_rad = 0.02;
+  HeadingSample h;
+  h.heading_rad = 0.0;  // the compass says north
+  // THEN yaw = pi/2 - (heading + declination - bias); a gyrocompass (true north) skips the declination
+  EXPECT_NEAR(yawFromHeading(h, c), std::numbers::pi / 2.0 - 0.08, 1e-12);
+  h.is_true = true;
+  EXPECT_NEAR(yawFromHeading(h, c), std::numbers::pi / 2.0 + 0.02, 1e-12);
+  h.heading_rad = std::numbers::pi;  // south: yaw -pi/2 (wrapped)
+  h.is_true = true;
+  c.heading_bias_rad = 0.0;
+  EXPECT_NEAR(yawFromHeading(h, c), -std::numbers::pi / 2.0, 1e-12);
 }
 
 }  // namespace
