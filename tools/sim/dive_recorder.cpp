@@ -12,10 +12,18 @@
 namespace deepnav::sim {
 namespace {
 
-TruthSample toTruth(const GroundTruthSample& g) {
+// The vehicle's odometry frame: ENU axes, origin at the robot's start position horizontally and at the
+// sea surface vertically (z = -depth, as the filter integrates it). The simulator's scene frame has its
+// origin at the panel site; ground truth is recorded in the vehicle's frame so the two compare directly.
+Eigen::Vector3d sceneToOdomOffset(const SensorSimulator& sim) {
+  const Eigen::Vector3d start = sim.truthAt(0).p_robot_in_odom_m;
+  return Eigen::Vector3d(start.x(), start.y(), sim.scenario().environment.odom_origin_depth_m);
+}
+
+TruthSample toTruth(const GroundTruthSample& g, const Eigen::Vector3d& scene_to_odom_m) {
   TruthSample t;
   t.t_us = g.t_us;
-  t.p_robot_in_odom_m = g.p_robot_in_odom_m;
+  t.p_robot_in_odom_m = g.p_robot_in_odom_m - scene_to_odom_m;
   t.q_odom_robot = g.q_odom_robot;
   t.v_robot_in_odom_mps = g.v_robot_in_odom_mps;
   t.w_robot_radps = g.w_robot_radps;
@@ -35,9 +43,12 @@ bool readText(const std::string& path, std::string* text, std::string* error) {
 }
 
 // Sensor samples become loop inputs; the camera ticks wait for the renderer.
-void recordEvent(const SimEvent& e, RecordingWriter* writer, DiveRecordSummary* summary) {
+void recordEvent(const SimEvent& e, const Eigen::Vector3d& scene_to_odom_m, RecordingWriter* writer,
+                 DiveRecordSummary* summary) {
   switch (e.stream) {
-    case SimStream::kGroundTruth: writer->recordTruth(toTruth(std::get<GroundTruthSample>(e.sample))); break;
+    case SimStream::kGroundTruth:
+      writer->recordTruth(toTruth(std::get<GroundTruthSample>(e.sample), scene_to_odom_m));
+      break;
     case SimStream::kImu: writer->recordInput(std::get<ImuSample>(e.sample)); break;
     case SimStream::kDvl: writer->recordInput(std::get<DvlSample>(e.sample)); break;
     case SimStream::kCompass: writer->recordInput(std::get<HeadingSample>(e.sample)); break;
@@ -68,10 +79,11 @@ bool recordDive(const DiveRecordOptions& o, DiveRecordSummary* summary, std::str
   if (!writer.open(o.out_path, ro, error)) return false;
   writer.recordMetadata("deepnav.board", {{"yaml", board_text}, {"path", o.board_path}});
   writer.recordMetadata("deepnav.sim", {{"scenario", o.scenario_path}, {"seed", std::to_string(o.seed)}});
+  const Eigen::Vector3d scene_to_odom_m = sceneToOdomOffset(sim);
   SimEvent e;
   TimeUs next_report_us = 0;
   while (sim.next(&e)) {
-    recordEvent(e, &writer, summary);
+    recordEvent(e, scene_to_odom_m, &writer, summary);
     summary->duration_s = usToS(e.t_us);
     if (o.progress && e.t_us >= next_report_us) {
       std::fprintf(stderr, "sim: %5.1f / %.0f s simulated\n", usToS(e.t_us), scenario.duration_s);

@@ -1,0 +1,22 @@
+#pragma once
+#include <cstdint>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "nav/types/time.h"
+
+namespace deepnav {
+
+// The instant a stereo pair is exposed, with the true pose of each camera's optical frame (z forward,
+// x right, y down) in the odometry frame. The renderer draws the pair from these poses.
+struct CameraTick {
+  TimeUs t_us = 0;
+  std::uint32_t frame_index = 0;
+  Eigen::Vector3d p_left_cam_in_odom_m = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond q_odom_left_cam = Eigen::Quaterniond::Identity();
+  Eigen::Vector3d p_right_cam_in_odom_m = Eigen::Vector3d::Zero();
+  Eigen::Quaterniond q_odom_right_cam = Eigen::Quaterniond::Identity();
+};
+
+}  // namespace deepnav

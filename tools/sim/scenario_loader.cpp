@@ -1,0 +1,249 @@
+#include "tools/sim/scenario_loader.h"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "tools/sim/trajectory.h"
+#include "tools/sim/yaml_section.h"
+
+namespace deepnav::sim {
+
+namespace {
+
+// Ranges are wide enough for any sane dive and narrow enough to catch unit mistakes (ms for s, deg for
+// rad). Units are printed in the messages.
+constexpr double kMaxDepth_m = 11000.0;
+constexpr double kMaxLever_m = 10.0;
+constexpr double kMaxAngle_deg = 360.0;
+
+void readEnvironment(YamlSection s, EnvironmentConfig* c) {
+  s.number("seabed_depth_m", &c->seabed_depth_m, 1.0, kMaxDepth_m, "m");
+  s.number("odom_origin_depth_m", &c->odom_origin_depth_m, 0.0, kMaxDepth_m, "m");
+  s.number("water_density_kgpm3", &c->water_density_kgpm3, 990.0, 1100.0, "kg/m^3");
+  s.number("gravity_mps2", &c->gravity_mps2, 9.7, 9.9, "m/s^2");
+  s.number("atmospheric_pressure_pa", &c->atmospheric_pressure_pa, 80000.0, 120000.0, "Pa");
+  s.finish();
+}
+
+void readWater(YamlSection s, WaterConfig* c) {
+  const int preset = s.choice("preset", {"clear", "moderate", "murky"});
+  if (preset >= 0) c->preset = static_cast<WaterPreset>(preset);
+  s.finish();
+}
+
+void readPanel(YamlSection s, PanelGeometry* c) {
+  s.numbers("centre_in_odom_m", &c->centre_in_odom_m, -1000.0, 1000.0, "m");
+  s.number("half_width_m", &c->half_width_m, 0.2, 10.0, "m");
+  s.number("height_m", &c->height_m, 0.2, 10.0, "m");
+  s.number("corner_radius_m", &c->corner_radius_m, 0.0, 2.0, "m");
+  s.number("front_yaw_deg", &c->front_yaw_deg, -kMaxAngle_deg, kMaxAngle_deg, "deg");
+  s.boolean("markers_enabled", &c->markers_enabled);
+  s.finish();
+}
+
+void readTrajectory(YamlSection s, TrajectoryConfig* c) {
+  s.number("standoff_m", &c->standoff_m, 0.3, 20.0, "m");
+  s.number("start_distance_m", &c->start_distance_m, 0.3, 200.0, "m");
+  s.number("start_depth_m", &c->start_depth_m, 0.0, kMaxDepth_m, "m");
+  s.number("circle_depth_m", &c->circle_depth_m, 0.0, kMaxDepth_m, "m");
+  s.number("start_hold_s", &c->start_hold_s, 0.0, 3600.0, "s");
+  s.number("approach_s", &c->approach_s, 1.0, 3600.0, "s");
+  s.number("dwell_s", &c->dwell_s, 0.0, 3600.0, "s");
+  s.number("traverse_s", &c->traverse_s, 1.0, 3600.0, "s");
+  s.number("face_alignment", &c->face_alignment, 0.0, 1.0, "(fraction)");
+  s.number("surge_amplitude_m", &c->surge_amplitude_m, 0.0, 2.0, "m");
+  s.number("sway_amplitude_m", &c->sway_amplitude_m, 0.0, 2.0, "m");
+  s.number("heave_amplitude_m", &c->heave_amplitude_m, 0.0, 2.0, "m");
+  s.number("roll_amplitude_deg", &c->roll_amplitude_deg, 0.0, 30.0, "deg");
+  s.number("pitch_amplitude_deg", &c->pitch_amplitude_deg, 0.0, 30.0, "deg");
+  s.number("yaw_amplitude_deg", &c->yaw_amplitude_deg, 0.0, 90.0, "deg");
+  s.number("disturbance_period_s", &c->disturbance_period_s, 1.0, 600.0, "s");
+  s.finish();
+}
+
+void readImu(YamlSection s, ImuConfig* c) {
+  s.boolean("enabled", &c->enabled);
+  s.number("rate_hz", &c->rate_hz, 1.0, 2000.0, "Hz");
+  s.number("gyro_noise_deg_per_sqrt_h", &c->gyro_noise_deg_per_sqrt_h, 0.0, 100.0, "deg/sqrt(h)");
+  s.number("gyro_bias_rw_deg_per_h_per_sqrt_h", &c->gyro_bias_rw_deg_per_h_per_sqrt_h, 0.0, 1000.0, "deg/h/sqrt(h)");
+  s.number("gyro_initial_bias_deg_per_h", &c->gyro_initial_bias_deg_per_h, 0.0, 10000.0, "deg/h");
+  s.number("accel_noise_mps_per_sqrt_h", &c->accel_noise_mps_per_sqrt_h, 0.0, 100.0, "m/s/sqrt(h)");
+  s.number("accel_bias_rw_mps2_per_sqrt_h", &c->accel_bias_rw_mps2_per_sqrt_h, 0.0, 10.0, "m/s^2/sqrt(h)");
+  s.number("accel_initial_bias_mps2", &c->accel_initial_bias_mps2, 0.0, 10.0, "m/s^2");
+  s.numbers("mount_rpy_deg", &c->mount_rpy_deg, -kMaxAngle_deg, kMaxAngle_deg, "deg");
+  s.finish();
+}
+
+void readDvl(YamlSection s, DvlConfig* c) {
+  s.boolean("enabled", &c->enabled);
+  s.number("rate_hz", &c->rate_hz, 0.1, 100.0, "Hz");
+  s.numbers("p_dvl_in_robot_m", &c->p_dvl_in_robot_m, -kMaxLever_m, kMaxLever_m, "m");
+  s.numbers("mount_rpy_deg", &c->mount_rpy_deg, -kMaxAngle_deg, kMaxAngle_deg, "deg");
+  s.number("noise_fraction_of_speed", &c->noise_fraction_of_speed, 0.0, 0.5, "(fraction)");
+  s.number("noise_floor_mps", &c->noise_floor_mps, 0.0, 1.0, "m/s");
+  s.number("min_altitude_m", &c->min_altitude_m, 0.0, 1000.0, "m");
+  s.number("max_altitude_m", &c->max_altitude_m, 0.1, 1000.0, "m");
+  s.number("beam_angle_deg", &c->beam_angle_deg, 5.0, 60.0, "deg");
+  s.number("beam_azimuth_offset_deg", &c->beam_azimuth_offset_deg, -kMaxAngle_deg, kMaxAngle_deg, "deg");
+  s.number("range_noise_m", &c->range_noise_m, 0.0, 10.0, "m");
+  s.finish();
+}
+
+void readCompass(YamlSection s, CompassConfig* c) {
+  s.boolean("enabled", &c->enabled);
+  s.number("rate_hz", &c->rate_hz, 0.1, 200.0, "Hz");
+  s.number("noise_deg", &c->noise_deg, 0.0, 90.0, "deg");
+  s.number("bias_deg", &c->bias_deg, -180.0, 180.0, "deg");
+  s.number("declination_deg", &c->declination_deg, -180.0, 180.0, "deg");
+  s.boolean("true_north", &c->true_north);
+  s.finish();
+}
+
+void readDepth(YamlSection s, DepthConfig* c) {
+  s.boolean("enabled", &c->enabled);
+  s.number("rate_hz", &c->rate_hz, 0.1, 200.0, "Hz");
+  s.number("noise_m", &c->noise_m, 0.0, 100.0, "m");
+  s.numbers("p_sensor_in_robot_m", &c->p_sensor_in_robot_m, -kMaxLever_m, kMaxLever_m, "m");
+  s.finish();
+}
+
+void readAttitude(YamlSection s, AttitudeConfig* c) {
+  s.boolean("enabled", &c->enabled);
+  s.number("rate_hz", &c->rate_hz, 0.1, 200.0, "Hz");
+  s.number("noise_deg", &c->noise_deg, 0.0, 90.0, "deg");
+  s.finish();
+}
+
+void readCamera(YamlSection s, CameraConfig* c) {
+  s.boolean("enabled", &c->enabled);
+  s.number("rate_hz", &c->rate_hz, 0.1, 100.0, "Hz");
+  s.integer("width_px", &c->width_px, 16, 8192, "px");
+  s.integer("height_px", &c->height_px, 16, 8192, "px");
+  s.number("fx_px", &c->fx_px, 1.0, 100000.0, "px");
+  s.number("fy_px", &c->fy_px, 1.0, 100000.0, "px");
+  s.number("cx_px", &c->cx_px, 0.0, 8192.0, "px");
+  s.number("cy_px", &c->cy_px, 0.0, 8192.0, "px");
+  s.number("baseline_m", &c->baseline_m, 0.01, 5.0, "m");
+  s.numbers("p_cam_in_robot_m", &c->p_cam_in_robot_m, -kMaxLever_m, kMaxLever_m, "m");
+  s.numbers("mount_rpy_deg", &c->mount_rpy_deg, -kMaxAngle_deg, kMaxAngle_deg, "deg");
+  s.finish();
+}
+
+void readFaultParams(YamlSection s, FaultSpec* f) {
+  switch (f->kind) {
+    case FaultKind::kDropout:
+      s.number("probability", &f->probability, 0.0, 1.0, "(fraction)");
+      break;
+    case FaultKind::kOutlier:
+      s.number("probability", &f->probability, 0.0, 1.0, "(fraction)");
+      s.number("magnitude_sigma", &f->magnitude_sigma, 0.0, 1000.0, "sigma");
+      break;
+    case FaultKind::kStuck:
+      break;
+    case FaultKind::kTimeJitter:
+      s.number("std_ms", &f->std_ms, 0.0, 1000.0, "ms");
+      break;
+  }
+  s.finish();
+}
+
+void readFault(YamlSection s, YamlReadErrors* errors, FaultSpec* f) {
+  const int stream = s.choice("stream", {"imu", "dvl", "compass", "attitude", "depth", "camera"});
+  if (stream >= 0) f->stream = static_cast<SimStream>(stream + 1);  // the list follows SimStream, less ground truth
+  const int kind = s.choice("kind", {"dropout", "outlier", "stuck", "time_jitter"});
+  if (kind >= 0) f->kind = static_cast<FaultKind>(kind);
+  s.number("t_start_s", &f->t_start_s, 0.0, 1e6, "s");
+  s.number("t_end_s", &f->t_end_s, 0.0, 1e6, "s");
+  if (errors->failed()) return;
+  if (stream < 0 || kind < 0) return errors->fail("'" + s.path() + "' needs 'stream' and 'kind'");
+  if (!s.has("t_start_s") || !s.has("t_end_s"))
+    return errors->fail("'" + s.path() + "' needs 't_start_s' and 't_end_s'");
+  if (!(f->t_end_s > f->t_start_s))
+    return errors->fail("key '" + s.keyPath("t_end_s") + "' must be greater than t_start_s");
+  if (f->kind == FaultKind::kOutlier && f->stream == SimStream::kCamera)
+    return errors->fail("key '" + s.keyPath("kind") + "': outlier does not apply to the camera stream " +
+                        "(allowed: dropout, stuck, time_jitter)");
+  readFaultParams(s.section("params"), f);
+  s.finish();
+}
+
+void readFaults(const YAML::Node& list, YamlReadErrors* errors, std::vector<FaultSpec>* faults) {
+  if (!list.IsDefined() || list.IsNull()) return;
+  if (!list.IsSequence()) return errors->fail("key 'faults' must be a list");
+  for (std::size_t i = 0; i < list.size() && !errors->failed(); ++i) {
+    FaultSpec f;
+    readFault(YamlSection(list[i], "faults[" + std::to_string(i) + "]", errors), errors, &f);
+    faults->push_back(f);
+  }
+}
+
+// Checks that span several keys.
+void checkConsistency(const Scenario& s, YamlReadErrors* errors) {
+  if (errors->failed()) return;
+  const double seabed = s.environment.seabed_depth_m;
+  if (!(s.trajectory.circle_depth_m < seabed) || !(s.trajectory.start_depth_m < seabed))
+    return errors->fail("keys 'trajectory.start_depth_m' and 'trajectory.circle_depth_m' must be shallower than "
+                        "'environment.seabed_depth_m' (" + std::to_string(seabed) + " m)");
+  if (!(s.dvl.min_altitude_m < s.dvl.max_altitude_m))
+    return errors->fail("key 'dvl.min_altitude_m' must be less than 'dvl.max_altitude_m'");
+  if (!(s.panel.corner_radius_m < s.panel.half_width_m))
+    return errors->fail("key 'panel.corner_radius_m' must be less than 'panel.half_width_m'");
+  if (!(s.trajectory.start_distance_m >= s.trajectory.standoff_m))
+    return errors->fail("key 'trajectory.start_distance_m' must be >= 'trajectory.standoff_m'");
+  if (!(s.camera.cx_px < s.camera.width_px) || !(s.camera.cy_px < s.camera.height_px))
+    return errors->fail("keys 'camera.cx_px' and 'camera.cy_px' must lie inside the image");
+}
+
+}  // namespace
+
+bool parseScenario(const std::string& yaml_text, const std::string& source_name, Scenario* out,
+                   std::string* error) {
+  YamlReadErrors errors;
+  errors.source_name = source_name;
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml_text);
+  } catch (const YAML::Exception& e) {
+    if (error) *error = source_name + ": YAML syntax error: " + e.what();
+    return false;
+  }
+  Scenario s;
+  s.name = std::filesystem::path(source_name).stem().string();
+  YamlSection top(root, "", &errors);
+  top.text("name", &s.name);
+  top.text("description", &s.description);
+  top.number("duration_s", &s.duration_s, 1.0, 86400.0, "s");
+  readEnvironment(top.section("environment"), &s.environment);
+  readWater(top.section("water"), &s.water);
+  readPanel(top.section("panel"), &s.panel);
+  readTrajectory(top.section("trajectory"), &s.trajectory);
+  readImu(top.section("imu"), &s.imu);
+  readDvl(top.section("dvl"), &s.dvl);
+  readCompass(top.section("compass"), &s.compass);
+  readDepth(top.section("depth"), &s.depth);
+  readAttitude(top.section("attitude"), &s.attitude);
+  readCamera(top.section("camera"), &s.camera);
+  readFaults(top.sequence("faults"), &errors, &s.faults);
+  top.finish();
+  checkConsistency(s, &errors);
+  if (errors.failed()) {
+    if (error) *error = errors.first_error;
+    return false;
+  }
+  *out = s;
+  return true;
+}
+
+bool loadScenario(const std::string& path, Scenario* out, std::string* error) {
+  std::ifstream file(path);
+  if (!file) {
+    if (error) *error = path + ": cannot open the scenario file";
+    return false;
+  }
+  std::ostringstream text;
+  text << file.rdbuf();
+  return parseScenario(text.str(), path, out, error);
+}
+
+}  // namespace deepnav::sim
