@@ -36,6 +36,11 @@ class LiveLoop {
   // Stops the threads after the current tick, drains the recorder and closes the recording.
   bool stop(std::string* error);
 
+  // The body of one loop tick at t_us: merge the input rings in time order, fuse the vision results, tick
+  // the core, publish. The loop thread calls it; tests and benchmarks drive it directly when start() was
+  // not called.
+  void runTick(TimeUs t_us);
+
   LoopStats stats() const { return scheduler_.stats(); }
   NavSolution latest() const;
   InputCounters counters() const;
@@ -44,7 +49,6 @@ class LiveLoop {
  private:
   void loopThread();
   void visionThread();
-  void runTick(TimeUs t_us);
   bool consumeOldest(TimeUs t_us);
   void publish(const NavSolution& s);
 

@@ -92,7 +92,8 @@ void tickAt(BenchRun* run, TimeUs t_us) {
   const TimeUs start = monotonicUs();
   const NavSolution& s = run->core.tick(t_us);
   run->scheduler.recordRun(run->nav_task, monotonicUs() - start);
-  run->summary->estimate.push_back({usToS(s.t_us), s.p_robot_in_odom_m, s.q_odom_robot});
+  // Before alignment the filter has no attitude: those epochs are neither a trajectory nor scored.
+  if (s.stage != NavStage::kInit) run->summary->estimate.push_back({usToS(s.t_us), s.p_robot_in_odom_m, s.q_odom_robot});
   ++run->summary->ticks;
   ++run->tick_index;
 }
@@ -177,7 +178,9 @@ bool onReproduceEvent(BenchRun* run, const ReplayEvent& e) {
   return true;
 }
 
-void computeMetrics(ReplaySummary* s) {
+}  // namespace
+
+void computeReplayMetrics(ReplaySummary* s) {
   s->has_truth = !s->truth.empty() && !s->estimate.empty();
   std::vector<Eigen::Vector3d> positions;
   positions.reserve(s->estimate.size());
@@ -188,7 +191,6 @@ void computeMetrics(ReplaySummary* s) {
   s->errors = trajectoryErrors(a.estimate, a.truth);
 }
 
-}  // namespace
 
 bool loadReplayBoard(const std::string& board_path, const RecordingReader& reader, const std::string& recording,
                      BoardConfig* config, std::string* board_text, std::string* error) {
@@ -237,7 +239,7 @@ bool runBenchReplay(const ReplayOptions& o, ReplaySummary* summary, std::string*
   std::string close_error;
   if (!run->writer.close(&close_error)) summary->warnings.push_back("replay.mcap: " + close_error);
   if (!ok) return false;
-  computeMetrics(summary);
+  computeReplayMetrics(summary);
   return writeReplayOutputs(o.out_dir, *summary, error);
 }
 

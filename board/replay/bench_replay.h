@@ -54,6 +54,9 @@ bool runBenchReplay(const ReplayOptions& options, ReplaySummary* summary, std::s
 bool loadReplayBoard(const std::string& board_path, const RecordingReader& reader, const std::string& recording,
                      BoardConfig* config, std::string* board_text, std::string* error);
 
+// Fills errors and smoothness from estimate and truth.
+void computeReplayMetrics(ReplaySummary* summary);
+
 // Writes summary.json, trajectory.tum and truth.tum into dir.
 bool writeReplayOutputs(const std::string& dir, const ReplaySummary& summary, std::string* error);
 

@@ -44,9 +44,9 @@ bool runRealtimeReplay(const ReplayOptions& o, ReplaySummary* summary, std::stri
     }
   }
   source.stop();
+  if (!loop->stop(error)) return false;
   const LoopStats live_stats = loop->stats();
   const std::uint64_t drops = loop->recorderDrops() + source.refused();
-  if (!loop->stop(error)) return false;
   ReplayOptions bench = o;
   bench.input_path = live_path;
   bench.board_path.clear();
@@ -56,7 +56,19 @@ bool runRealtimeReplay(const ReplayOptions& o, ReplaySummary* summary, std::stri
   summary->loop = live_stats;
   if (!source.error().empty()) summary->warnings.push_back(source.error());
   if (drops > 0) summary->warnings.push_back(std::to_string(drops) + " samples or records refused by full queues");
-  return true;
+  // Ground truth is not a loop input, so the live recording has none: take it from the original.
+  summary->truth.clear();
+  reader.forEach(
+      true,
+      [&](const ReplayEvent& e) {
+        if (e.kind == ReplayEvent::Kind::kTruth) {
+          summary->truth.push_back({usToS(e.t_us), e.truth.p_robot_in_odom_m, e.truth.q_odom_robot});
+        }
+        return true;
+      },
+      error);
+  computeReplayMetrics(summary);
+  return writeReplayOutputs(o.out_dir, *summary, error);
 }
 
 }  // namespace deepnav
