@@ -61,7 +61,9 @@ TEST(DisparityEdgeRefiner, HandsFattenedPixelsBackToTheSurfaceTheyLookLike) {
   DisparityEdgeRefiner refiner;
   ASSERT_TRUE(refiner.allocate(40, 40, 32));
   // WHEN refined
-  refiner.apply(image, 5, 2.0f, 10.0f, &d);
+  EdgeRefineParams params;
+  params.budget = 1e9f;
+  refiner.apply(image, params, &d);
   // THEN the dark pixels take the background disparity and the square keeps its own
   EXPECT_FLOAT_EQ(d.at<float>(20, 26), 5.0f);
   EXPECT_FLOAT_EQ(d.at<float>(20, 25), 5.0f);

@@ -8,7 +8,7 @@ namespace deepnav {
 namespace {
 
 constexpr int kMaxColourDiff = 3 * 255;
-constexpr int kStridePx = 2;
+constexpr std::uint16_t kNoBin = 0xFFFF;
 
 // Running-count dilation of one line of n flags spaced by stride.
 void dilateLine(const std::uint8_t* in, std::uint8_t* out, int n, std::ptrdiff_t stride, int r) {
@@ -21,10 +21,23 @@ void dilateLine(const std::uint8_t* in, std::uint8_t* out, int n, std::ptrdiff_t
   }
 }
 
+// Lattice step of the window samples: 2 px unless the band is so large that the budget of
+// samples per image pixel would be exceeded; then 4, then 8.
+int chooseStride(std::size_t band_px, std::size_t image_px, int radius_px, float budget) {
+  for (int stride : {2, 4}) {
+    const double per_axis = 2.0 * (radius_px / stride) + 1.0;
+    const double samples = static_cast<double>(band_px) * per_axis * per_axis;
+    if (samples <= budget * static_cast<double>(image_px)) return stride;
+  }
+  return 8;
+}
+
 }  // namespace
 
 bool DisparityEdgeRefiner::allocate(int width_px, int height_px, int num_disparities) {
-  if (width_px < 1 || height_px < 1 || num_disparities < 1) return false;
+  if (width_px < 1 || height_px < 1 || num_disparities < 1 || num_disparities >= kNoBin) {
+    return false;
+  }
   width_px_ = width_px;
   height_px_ = height_px;
   bins_ = num_disparities + 1;
@@ -32,6 +45,7 @@ bool DisparityEdgeRefiner::allocate(int width_px, int height_px, int num_dispari
   jump_.assign(pixels, 0);
   band_.assign(pixels, 0);
   rows_.assign(pixels, 0);
+  bin_.assign(pixels, kNoBin);
   weight_lut_.assign(kMaxColourDiff + 1, 0.0f);
   hist_w_.assign(bins_, 0.0f);
   hist_wd_.assign(bins_, 0.0f);
@@ -39,18 +53,23 @@ bool DisparityEdgeRefiner::allocate(int width_px, int height_px, int num_dispari
   return true;
 }
 
+// Also records each pixel's integer disparity bin for the medians.
 void DisparityEdgeRefiner::markJumps(const cv::Mat& d, float jump_px) {
   const int w = width_px_;
   for (int v = 0; v < height_px_; ++v) {
     const float* row = d.ptr<float>(v);
     const float* down = d.ptr<float>(std::min(v + 1, height_px_ - 1));
-    std::uint8_t* out = jump_.data() + static_cast<std::size_t>(v) * w;
+    std::uint8_t* jump = jump_.data() + static_cast<std::size_t>(v) * w;
+    std::uint16_t* bin = bin_.data() + static_cast<std::size_t>(v) * w;
     for (int u = 0; u < w; ++u) {
       const float a = row[u];
       const float right = row[std::min(u + 1, w - 1)];
-      const bool jump = a >= 0.0f && ((right >= 0.0f && std::fabs(right - a) > jump_px) ||
-                                      (down[u] >= 0.0f && std::fabs(down[u] - a) > jump_px));
-      out[u] = jump ? 1 : 0;
+      const bool is_jump = a >= 0.0f && ((right >= 0.0f && std::fabs(right - a) > jump_px) ||
+                                         (down[u] >= 0.0f && std::fabs(down[u] - a) > jump_px));
+      jump[u] = is_jump ? 1 : 0;
+      bin[u] = a >= 0.0f
+                   ? static_cast<std::uint16_t>(std::min(bins_ - 1, static_cast<int>(a + 0.5f)))
+                   : kNoBin;
     }
   }
 }
@@ -64,32 +83,30 @@ void DisparityEdgeRefiner::dilateJumps(int r) {
   for (int u = 0; u < w; ++u) dilateLine(rows_.data() + u, band_.data() + u, height_px_, w, r);
 }
 
-float DisparityEdgeRefiner::weightedMedian(const cv::Mat& guide, int u, int v, int r) {
-  const int channels = guide.channels();
-  const int diff_scale = channels == 1 ? 3 : 1;
-  const std::uint8_t* centre = guide.ptr<std::uint8_t>(v) + u * channels;
+template <int kChannels>
+float DisparityEdgeRefiner::weightedMedian(const cv::Mat& guide, int u, int v, int reach) {
+  constexpr int kDiffScale = kChannels == 1 ? 3 : 1;  // grey differences on the colour scale
+  const std::uint8_t* centre = guide.ptr<std::uint8_t>(v) + u * kChannels;
   std::fill(hist_w_.begin(), hist_w_.end(), 0.0f);
   std::fill(hist_wd_.begin(), hist_wd_.end(), 0.0f);
   float total = 0.0f;
-  // The window is sampled on a lattice of kStridePx centred on the pixel: the same reach for a
-  // quarter of the work; the colour weights, not the sample density, carry the edge.
-  for (int dv = -r; dv <= r; dv += kStridePx) {
+  for (int dv = -reach; dv <= reach; dv += stride_px_) {
     const int v2 = v + dv;
     if (v2 < 0 || v2 >= height_px_) continue;
+    const std::size_t row = static_cast<std::size_t>(v2) * width_px_;
     const float* d_row = source_px_.ptr<float>(v2);
     const std::uint8_t* g_row = guide.ptr<std::uint8_t>(v2);
-    for (int du = -r; du <= r; du += kStridePx) {
+    for (int du = -reach; du <= reach; du += stride_px_) {
       const int u2 = u + du;
       if (u2 < 0 || u2 >= width_px_) continue;
-      const float dq = d_row[u2];
-      if (dq < 0.0f) continue;
-      const std::uint8_t* q = g_row + u2 * channels;
+      const int bin = bin_[row + u2];
+      if (bin == kNoBin) continue;
+      const std::uint8_t* q = g_row + u2 * kChannels;
       int diff = 0;
-      for (int c = 0; c < channels; ++c) diff += std::abs(q[c] - centre[c]);
-      const float wq = weight_lut_[diff * diff_scale];
-      const int bin = std::min(bins_ - 1, static_cast<int>(dq + 0.5f));
+      for (int c = 0; c < kChannels; ++c) diff += std::abs(q[c] - centre[c]);
+      const float wq = weight_lut_[diff * kDiffScale];
       hist_w_[bin] += wq;
-      hist_wd_[bin] += wq * dq;
+      hist_wd_[bin] += wq * d_row[u2];
       total += wq;
     }
   }
@@ -102,23 +119,37 @@ float DisparityEdgeRefiner::weightedMedian(const cv::Mat& guide, int u, int v, i
   return source_px_.at<float>(v, u);
 }
 
-void DisparityEdgeRefiner::apply(const cv::Mat& guide, int radius_px, float jump_px, float sigma,
-                                 cv::Mat* disparity_px) {
-  if (radius_px < 1 || sigma <= 0.0f) return;
-  if (sigma != lut_sigma_) {
-    for (int i = 0; i <= kMaxColourDiff; ++i)
-      weight_lut_[i] = std::exp(-static_cast<float>(i) / sigma);
-    lut_sigma_ = sigma;
-  }
-  disparity_px->copyTo(source_px_);
-  markJumps(source_px_, jump_px);
-  dilateJumps(radius_px);
+template <int kChannels>
+void DisparityEdgeRefiner::refineBand(const cv::Mat& guide, int radius_px, cv::Mat* disparity_px) {
+  const int reach = radius_px - radius_px % stride_px_;  // lattice points within the radius
   for (int v = 0; v < height_px_; ++v) {
     float* out = disparity_px->ptr<float>(v);
     const std::uint8_t* band = band_.data() + static_cast<std::size_t>(v) * width_px_;
     for (int u = 0; u < width_px_; ++u) {
-      if (band[u] && out[u] >= 0.0f) out[u] = weightedMedian(guide, u, v, radius_px);
+      if (band[u] && out[u] >= 0.0f) out[u] = weightedMedian<kChannels>(guide, u, v, reach);
     }
+  }
+}
+
+void DisparityEdgeRefiner::apply(const cv::Mat& guide, const EdgeRefineParams& params,
+                                 cv::Mat* disparity_px) {
+  if (params.band_px < 1 || params.radius_px < 1 || params.sigma <= 0.0f) return;
+  if (params.sigma != lut_sigma_) {
+    for (int i = 0; i <= kMaxColourDiff; ++i) {
+      weight_lut_[i] = std::exp(-static_cast<float>(i) / params.sigma);
+    }
+    lut_sigma_ = params.sigma;
+  }
+  disparity_px->copyTo(source_px_);
+  markJumps(source_px_, params.jump_px);
+  dilateJumps(params.band_px);
+  std::size_t band_px = 0;
+  for (std::uint8_t b : band_) band_px += b;
+  stride_px_ = chooseStride(band_px, band_.size(), params.radius_px, params.budget);
+  if (guide.channels() == 3) {
+    refineBand<3>(guide, params.radius_px, disparity_px);
+  } else {
+    refineBand<1>(guide, params.radius_px, disparity_px);
   }
 }
 

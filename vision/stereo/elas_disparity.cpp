@@ -65,8 +65,13 @@ bool ElasDisparity::compute(const cv::Mat& left, const cv::Mat& right, cv::Mat* 
   // the filters walk the map as one block: a non-continuous view (ROI) is replaced
   if (!disparity_px->isContinuous()) disparity_px->release();
   disparity_px->create(height_px_, width_px_, CV_32F);
-  desc_left_.compute(grey_left_, params_.sobel_shift);
-  desc_right_.compute(grey_right_, params_.sobel_shift);
+  sobel_histogram_.fill(0);
+  desc_left_.computeGradients(grey_left_, &sobel_histogram_);
+  desc_right_.computeGradients(grey_right_, &sobel_histogram_);
+  descriptor_gain_ = descriptorGain(sobel_histogram_, params_.descriptor_target,
+                                    params_.max_descriptor_gain, params_.fixed_descriptor_gain);
+  desc_left_.computeDescriptors(descriptor_gain_);
+  desc_right_.computeDescriptors(descriptor_gain_);
   support_.compute(desc_left_, desc_right_);
   const bool have_left = prior_left_.build(support_.meshPoints(), false);
   const bool have_right = prior_right_.build(support_.meshPoints(), true);
@@ -93,8 +98,7 @@ void ElasDisparity::postprocess(const cv::Mat& left, cv::Mat* disparity_px) {
   speckle_.apply(params_.speckle_size_px, params_.speckle_sim_px, disparity_px);
   if (params_.subpixel) addSubpixel(subpixel_px_, disparity_px);
   fillDisparityGaps(params_.ipol_gap_width_px, params_.fill_all, disparity_px);
-  refiner_.apply(left, params_.refine_radius_px, params_.refine_jump_px, params_.refine_sigma,
-                 disparity_px);
+  refiner_.apply(left, params_.refine, disparity_px);
 }
 
 }  // namespace deepnav

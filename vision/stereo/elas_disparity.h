@@ -31,6 +31,7 @@ class ElasDisparity final : public DisparityEstimator {
   int triangleCount() const { return prior_left_.triangleCount(); }
   const ElasSupport& support() const { return support_; }
   const cv::Mat& priorMean() const { return prior_left_.mean(); }
+  float lastDescriptorGain() const { return descriptor_gain_; }
   const ElasParams& params() const { return params_; }
 
  private:
@@ -43,6 +44,8 @@ class ElasDisparity final : public DisparityEstimator {
   int height_px_ = 0;
   cv::Mat grey_left_, grey_right_;
   ElasDescriptorImage desc_left_, desc_right_;
+  SobelHistogram sobel_histogram_{};
+  float descriptor_gain_ = 0.0f;
   ElasSupport support_;
   ElasPrior prior_left_, prior_right_;
   ElasCandidates candidates_left_, candidates_right_;

@@ -1,4 +1,5 @@
 #pragma once
+#include "vision/stereo/disparity_edge_refiner.h"
 
 namespace deepnav {
 
@@ -8,9 +9,13 @@ namespace deepnav {
 struct ElasParams {
   int num_disparities = 64;  // d in [0, num_disparities), at most 256
 
-  // Descriptor: 3x3 Sobel responses are divided by 2^sobel_shift before saturation to
-  // 8 bits, so a small shift keeps the weak gradients of low-contrast (underwater) images.
-  int sobel_shift = 2;
+  // Descriptor: 3x3 Sobel responses scaled so that the 90th percentile of |gx| becomes
+  // descriptor_target (of the +-127 an 8-bit descriptor byte holds), gain at most
+  // max_descriptor_gain so that sensor noise of a flat frame is not blown up; fixed_descriptor_gain
+  // > 0 replaces the automatic gain.
+  float descriptor_target = 80.0f;
+  float max_descriptor_gain = 4.0f;
+  float fixed_descriptor_gain = 0.0f;
 
   // Support points: matched on a regular grid over the full disparity range.
   int support_step_px = 5;          // grid spacing
@@ -44,12 +49,9 @@ struct ElasParams {
   int ipol_gap_width_px = 3;    // gaps up to this width are interpolated along rows, columns
   bool fill_all = false;        // then fill every remaining hole from its background side
   bool subpixel = true;         // parabola through the costs at d-1, d, d+1
-  // Edge-aware refinement (DisparityEdgeRefiner, beyond the paper): pixels within
-  // refine_radius_px of a jump > refine_jump_px take the colour-weighted median of their window,
-  // undoing the foreground fattening of window matching. refine_radius_px = 0 disables it.
-  int refine_radius_px = 8;
-  float refine_jump_px = 2.0f;
-  float refine_sigma = 10.0f;  // colour distance (sum of |dB|+|dG|+|dR|, or 3|dGrey|) scale
+  // Edge-aware refinement (DisparityEdgeRefiner, beyond the paper): undoes the foreground
+  // fattening of window matching at depth edges. refine.band_px = 0 disables it.
+  EdgeRefineParams refine;
 
   // Robot preset: leave unmatched pixels invalid, fill small gaps only.
   static ElasParams robotics() { return ElasParams{}; }
