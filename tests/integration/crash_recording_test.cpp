@@ -1,0 +1,65 @@
+// kill -9 during recording: the recording stays readable up to its last complete chunk (at most about a
+// second before the kill), and what it holds replays bit for bit.
+#include <csignal>
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "board/replay/bench_replay.h"
+#include "drivers/replay/recording_reader.h"
+#include "tests/support/test_dive.h"
+
+namespace deepnav {
+namespace {
+
+pid_t startRealtimeReplay(const std::string& dive, const std::string& out) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    const int devnull = open("/dev/null", O_WRONLY);
+    dup2(devnull, STDOUT_FILENO);
+    dup2(devnull, STDERR_FILENO);
+    const std::string exe = std::string(DEEPNAV_BIN_DIR) + "/deepnav";
+    execl(exe.c_str(), "deepnav", "replay", dive.c_str(), "--out", out.c_str(), "--realtime", nullptr);
+    _exit(127);
+  }
+  return pid;
+}
+
+TEST(CrashSafety, KillDuringRecordingLeavesAReadableRecording) {
+  // GIVEN the vehicle runtime recording a 10 s dive in real time
+  const std::string dive = testing::makeTestDive("crash_dive", 10.0);
+  const std::string out = ::testing::TempDir() + "crash_out";
+  std::filesystem::remove_all(out);
+  const pid_t pid = startRealtimeReplay(dive, out);
+  ASSERT_GT(pid, 0);
+  // WHEN it is killed with SIGKILL 4 s in
+  std::this_thread::sleep_for(std::chrono::milliseconds(4000));
+  ASSERT_EQ(kill(pid, SIGKILL), 0);
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFSIGNALED(status));
+  // THEN the recording opens, says it was cut off, and keeps all but at most the last ~1 s of the run
+  RecordingReader reader;
+  std::string error;
+  ASSERT_TRUE(reader.open(out + "/live.mcap", &error)) << error;
+  EXPECT_TRUE(reader.truncated());
+  ReplayOptions o;
+  o.input_path = out + "/live.mcap";
+  o.out_dir = out + "/after";
+  o.progress = false;
+  ReplaySummary s;
+  ASSERT_TRUE(runBenchReplay(o, &s, &error)) << error;
+  EXPECT_TRUE(s.reproduce);
+  EXPECT_GT(s.solutions_compared, 200u);  // >= 2 s of 100 Hz ticks survived (4 s - start-up - 1 chunk)
+  EXPECT_EQ(s.mismatches, 0u);
+  EXPECT_FALSE(s.warnings.empty());
+}
+
+}  // namespace
+}  // namespace deepnav
