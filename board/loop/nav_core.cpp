@@ -56,7 +56,7 @@ void NavCore::consume(const InputSample& sample) {
 }
 
 const NavSolution& NavCore::tick(TimeUs t_us) {
-  solution_ = ekf_.solution();
+  solution_ = ekf_.solution(t_us);
   // The solution is stamped with the tick; the filter state it holds is that of the last IMU sample
   // (at most one IMU period older at 100 Hz).
   solution_.t_us = t_us;

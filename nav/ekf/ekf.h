@@ -76,6 +76,9 @@ class Ekf {
   FuseResult releaseClone(TimeUs t_us, std::uint32_t id);
 
   NavSolution solution() const;
+  // The same, with the stale flags judged at now_us (the loop's tick time): a source that stopped is
+  // flagged even when no other input arrives to move the filter's clock.
+  NavSolution solution(TimeUs now_us) const;
 
   bool initialised() const { return initialised_; }
   bool aligned() const { return aligned_; }

@@ -18,9 +18,11 @@ std::uint32_t Ekf::statusBits(TimeUs now_us) const {
   return bits;
 }
 
-NavSolution Ekf::solution() const {
+NavSolution Ekf::solution() const { return solution(0); }
+
+NavSolution Ekf::solution(TimeUs now_us) const {
   NavSolution s;
-  const TimeUs now = std::max(latest_input_t_us_, state_.t_us);
+  const TimeUs now = std::max({now_us, latest_input_t_us_, state_.t_us});
   s.t_us = state_.t_us;
   s.p_robot_in_odom_m = state_.x.p_robot_in_odom_m;
   s.q_odom_robot = state_.x.q_odom_robot;

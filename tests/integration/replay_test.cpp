@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "board/loop/nav_core.h"
 #include "board/replay/bench_replay.h"
 #include "tests/support/test_dive.h"
 
@@ -93,6 +94,37 @@ TEST(Replay, MissingOrGarbageFileGivesAClearError) {
   o.input_path = garbage;
   EXPECT_FALSE(runBenchReplay(o, &s, &error));
   EXPECT_NE(error.find(garbage), std::string::npos) << error;
+}
+
+}  // namespace
+}  // namespace deepnav
+
+namespace deepnav {
+namespace {
+
+TEST(NavCoreHealth, ASensorThatStopsIsFlaggedStaleAtTheTickEvenWithoutOtherInputs) {
+  // GIVEN a loop fed 10 s of a dive WHEN every input stops THEN the ticks alone raise the stale flags
+  const std::string dive = testing::makeTestDive("stale_dive", 10.0);
+  BoardConfig config;
+  std::string error;
+  ASSERT_TRUE(loadBoardConfig(std::string(DEEPNAV_SOURCE_DIR) + "/board/sim/board.yaml", &config, &error)) << error;
+  NavCore core;
+  ASSERT_TRUE(core.init(config, nullptr, &error)) << error;
+  RecordingReader reader;
+  ASSERT_TRUE(reader.open(dive, &error)) << error;
+  TimeUs last = 0;
+  reader.forEach(true, [&](const ReplayEvent& e) {
+    if (e.kind == ReplayEvent::Kind::kInput) {
+      core.consume(e.input);
+      last = e.t_us;
+    }
+    return true;
+  }, &error);
+  EXPECT_EQ(core.tick(last).faults & staleBit(kSrcDvl), 0u);
+  const NavSolution later = core.tick(last + 2 * kUsPerS);
+  EXPECT_NE(later.faults & staleBit(kSrcDvl), 0u);
+  EXPECT_NE(later.faults & staleBit(kSrcImu), 0u);
+  EXPECT_NE(later.faults & staleBit(kSrcDepth), 0u);
 }
 
 }  // namespace
