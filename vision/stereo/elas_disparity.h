@@ -21,7 +21,8 @@ namespace deepnav {
 // foreground fattening at depth edges (DisparityEdgeRefiner). Without the latter the Middlebury
 // D1 rates are 2.4 % (tsukuba) and 1.1 % (venus) instead of 1.7 % and 0.4 %.
 // Every buffer is sized in init() for one image size and disparity range; compute() does not
-// allocate, apart from one small std::vector<bool> inside cv::Subdiv2D::getTriangleList per view.
+// allocate (the Delaunay mesh is our own DelaunayTriangulation rather than cv::Subdiv2D, which
+// allocates on every call).
 class ElasDisparity final : public DisparityEstimator {
  public:
   // Returns false for sizes below 16x16 or invalid parameters (num_disparities in [2, 256]).

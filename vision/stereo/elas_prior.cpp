@@ -2,80 +2,81 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace deepnav {
 
 bool ElasPrior::allocate(int width_px, int height_px, int max_points) {
-  if (width_px < 2 || height_px < 2 || max_points < 0) return false;
+  if (width_px < 2 || height_px < 2 || max_points < 0 || !mesh_.allocate(max_points)) return false;
   width_px_ = width_px;
   height_px_ = height_px;
-  vertices_.reserve(static_cast<std::size_t>(max_points) + 4);
-  triangles_.reserve(2 * (static_cast<std::size_t>(max_points) + 4));
-  vertex_d_.create(height_px, width_px, CV_32F);
-  vertex_d_.setTo(-1.0f);
+  vertex_d_.assign(static_cast<std::size_t>(max_points) + 4, 0.0f);
+  vertex_at_.assign(static_cast<std::size_t>(width_px) * height_px, -1);
   mean_px_.create(height_px, width_px, CV_32F);
-  return true;
+  return mesh_.reset(-1, -1, width_px, height_px);
 }
 
 // Two support points may land on one right-image pixel; the larger disparity (the nearer
 // surface, which occludes the other) wins.
-void ElasPrior::insertPoint(float u, float v, float d) {
-  float& slot = vertex_d_.at<float>(static_cast<int>(v), static_cast<int>(u));
-  if (slot < 0.0f) vertices_.push_back({u, v, d});
-  slot = std::max(slot, d);
+void ElasPrior::addPoint(int u, int v, float d) {
+  int& at = vertex_at_[static_cast<std::size_t>(v) * width_px_ + u];
+  if (at >= 0) {
+    vertex_d_[at] = std::max(vertex_d_[at], d);
+    return;
+  }
+  const int vertex = mesh_.insert(u, v);
+  if (vertex < 0) return;  // capacity exhausted: cannot happen with max_points grid nodes
+  at = vertex;
+  vertex_d_[vertex] = d;
 }
 
-float ElasPrior::nearestDisparity(float u, float v) const {
+float ElasPrior::nearestDisparity(int x, int y) const {
   float best_d = 0.0f;
-  float best_dist2 = std::numeric_limits<float>::max();
-  for (const cv::Point3f& p : vertices_) {
-    const float dist2 = (p.x - u) * (p.x - u) + (p.y - v) * (p.y - v);
-    if (dist2 < best_dist2) {
+  long best_dist2 = -1;
+  for (int i = 4; i < mesh_.vertexCount(); ++i) {
+    const long dx = mesh_.x(i) - x, dy = mesh_.y(i) - y;
+    const long dist2 = dx * dx + dy * dy;
+    if (best_dist2 < 0 || dist2 < best_dist2) {
       best_dist2 = dist2;
-      best_d = vertex_d_.at<float>(static_cast<int>(p.y), static_cast<int>(p.x));
+      best_d = vertex_d_[i];
     }
   }
   return best_d;
 }
 
 bool ElasPrior::build(const std::vector<SupportPoint>& points, bool view_right) {
-  for (const cv::Point3f& p : vertices_) {
-    vertex_d_.at<float>(static_cast<int>(p.y), static_cast<int>(p.x)) = -1.0f;
+  for (int i = 4; i < mesh_.vertexCount(); ++i) {
+    vertex_at_[static_cast<std::size_t>(mesh_.y(i)) * width_px_ + mesh_.x(i)] = -1;
   }
-  vertices_.clear();
-  triangles_.clear();
+  mesh_.reset(-1, -1, width_px_, height_px_);
+  triangle_count_ = 0;
   // std::fill rather than Mat::setTo, which allocates a scratch buffer on every call
   std::fill(mean_px_.ptr<float>(0), mean_px_.ptr<float>(0) + mean_px_.total(), -1.0f);
   for (const SupportPoint& p : points) {
     const int u = view_right ? p.u_px - p.d_px : p.u_px;
-    if (u < 0) continue;
-    insertPoint(static_cast<float>(u), static_cast<float>(p.v_px), static_cast<float>(p.d_px));
+    if (u < 0 || u >= width_px_ || p.v_px < 0 || p.v_px >= height_px_) continue;
+    addPoint(u, p.v_px, static_cast<float>(p.d_px));
   }
-  if (vertices_.size() < 3) return false;
-  const float right = static_cast<float>(width_px_ - 1);
-  const float bottom = static_cast<float>(height_px_ - 1);
-  const cv::Point2f corners[4] = {{0, 0}, {right, 0}, {0, bottom}, {right, bottom}};
-  float corner_d[4];
-  for (int i = 0; i < 4; ++i) corner_d[i] = nearestDisparity(corners[i].x, corners[i].y);
-  for (int i = 0; i < 4; ++i) insertPoint(corners[i].x, corners[i].y, corner_d[i]);
-
-  subdiv_.initDelaunay(cv::Rect(0, 0, width_px_, height_px_));
-  for (const cv::Point3f& p : vertices_) subdiv_.insert(cv::Point2f(p.x, p.y));
-  subdiv_.getTriangleList(triangles_);
-  for (const cv::Vec6f& tri : triangles_) rasterise(tri);
+  if (mesh_.vertexCount() < 4 + 3) return false;
+  for (int i = 0; i < 4; ++i) vertex_d_[i] = nearestDisparity(mesh_.x(i), mesh_.y(i));
+  for (int t = 0; t < mesh_.slotCount(); ++t) {
+    const DelaunayTriangulation::Triangle& tri = mesh_.slot(t);
+    if (!tri.alive) continue;
+    float x[3], y[3], d[3];
+    for (int k = 0; k < 3; ++k) {
+      x[k] = static_cast<float>(mesh_.x(tri.v[k]));
+      y[k] = static_cast<float>(mesh_.y(tri.v[k]));
+      d[k] = vertex_d_[tri.v[k]];
+    }
+    rasterise(x, y, d);
+    ++triangle_count_;
+  }
   return true;
 }
 
 // Plane through the three vertices, written to every pixel whose centre lies in the triangle
 // (with a small tolerance so that shared edges leave no cracks). Each row's span is the
 // intersection of the three edges' half-planes, so the inner loop only evaluates the plane.
-void ElasPrior::rasterise(const cv::Vec6f& tri) {
-  const float x[3] = {tri[0], tri[2], tri[4]};
-  const float y[3] = {tri[1], tri[3], tri[5]};
-  float d[3];
-  for (int i = 0; i < 3; ++i)
-    d[i] = vertex_d_.at<float>(static_cast<int>(y[i]), static_cast<int>(x[i]));
+void ElasPrior::rasterise(const float x[3], const float y[3], const float d[3]) {
   const float area = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
   if (std::fabs(area) < 1e-3f) return;
   // d = a u + b v + c by Cramer's rule on the three vertices

@@ -1,16 +1,17 @@
 #pragma once
 #include <opencv2/core.hpp>
-#include <opencv2/imgproc.hpp>
 #include <vector>
 
+#include "vision/stereo/delaunay_triangulation.h"
 #include "vision/stereo/elas_support.h"
 
 namespace deepnav {
 
 // Piecewise-planar disparity prior mu(u, v) of ELAS (Geiger et al. 2010): the Delaunay
 // triangulation of the support points, each triangle a plane d = a u + b v + c, rasterised into a
-// per-pixel map. The four image corners are added with the disparity of the nearest support point
-// so that the mesh covers the whole image.
+// per-pixel map. The mesh spans the rectangle one pixel outside the image, whose corners take the
+// disparity of the nearest support point, so that every pixel is covered. No allocation after
+// allocate().
 class ElasPrior {
  public:
   bool allocate(int width_px, int height_px, int max_points);
@@ -20,20 +21,20 @@ class ElasPrior {
 
   // mu in pixels, or a negative value where no triangle covers the pixel.
   const cv::Mat& mean() const { return mean_px_; }
-  int triangleCount() const { return static_cast<int>(triangles_.size()); }
+  int triangleCount() const { return triangle_count_; }
 
  private:
-  void insertPoint(float u, float v, float d);
-  float nearestDisparity(float u, float v) const;
-  void rasterise(const cv::Vec6f& tri);
+  void addPoint(int u, int v, float d);
+  float nearestDisparity(int x, int y) const;
+  void rasterise(const float x[3], const float y[3], const float d[3]);
 
   int width_px_ = 0;
   int height_px_ = 0;
-  cv::Subdiv2D subdiv_;
-  std::vector<cv::Vec6f> triangles_;
-  std::vector<cv::Point3f> vertices_;  // (u, v, d) of the inserted points
-  cv::Mat vertex_d_;                   // CV_32F, disparity at each inserted vertex pixel, else -1
-  cv::Mat mean_px_;                    // CV_32F
+  DelaunayTriangulation mesh_;
+  std::vector<float> vertex_d_;  // disparity of each mesh vertex
+  std::vector<int> vertex_at_;   // per pixel: the mesh vertex there, or -1
+  int triangle_count_ = 0;
+  cv::Mat mean_px_;  // CV_32F
 };
 
 }  // namespace deepnav
