@@ -1,7 +1,7 @@
 #include "board/config/board_config.h"
 
-#include <fstream>
-#include <sstream>
+#include "board/config/text_file.h"
+
 
 #include <yaml-cpp/yaml.h>
 
@@ -164,15 +164,12 @@ bool loadBoardConfigText(const std::string& text, const std::string& name, Board
 }
 
 bool loadBoardConfig(const std::string& path, BoardConfig* config, std::string* error) {
-  std::ifstream in(path);
-  if (!in) {
+  std::string text;
+  if (!readTextFile(path, "the board file", &text, error)) {
     *config = defaultBoardConfig();
-    if (error) *error = path + ": cannot open the board file";
     return false;
   }
-  std::stringstream text;
-  text << in.rdbuf();
-  return loadBoardConfigText(text.str(), path, config, error);
+  return loadBoardConfigText(text, path, config, error);
 }
 
 std::string describeBoardParams() {

@@ -1,5 +1,7 @@
 #include "board/config/panel_file.h"
 
+#include "board/config/text_file.h"
+
 #include <cmath>
 #include <fstream>
 #include <set>
@@ -131,14 +133,8 @@ bool parsePanelDescription(const std::string& text, const std::string& name, Pan
 }
 
 bool loadPanelDescription(const std::string& path, PanelDescription* out, std::string* error) {
-  std::ifstream in(path);
-  if (!in) {
-    if (error) *error = path + ": cannot open the panel description";
-    return false;
-  }
-  std::stringstream text;
-  text << in.rdbuf();
-  return parsePanelDescription(text.str(), path, out, error);
+  std::string text;
+  return readTextFile(path, "the panel description", &text, error) && parsePanelDescription(text, path, out, error);
 }
 
 std::string formatPanelDescription(const PanelDescription& p) {

@@ -1,5 +1,7 @@
 #include "board/loop/live_loop.h"
 
+#include "board/config/recording_options.h"
+
 #include <chrono>
 
 #include "drivers/clock/monotonic_clock.h"
@@ -39,15 +41,7 @@ bool LiveLoop::init(const BoardConfig& c, const std::string& board_text, const s
   recording_ = !recording_path.empty() && c.recording.enabled;
   sink_ = nullptr;
   if (recording_) {
-    RecordingOptions ro;
-    ro.compression = c.recording.compression;
-    ro.chunk_max_duration_s = c.recording.chunk_max_duration_s;
-    ro.chunk_size_kib = c.recording.chunk_size_kib;
-    ro.image_width_px = c.camera.width_px;
-    ro.image_height_px = c.camera.height_px;
-    ro.image_channels = c.camera.channels;
-    ro.record_images = c.recording.record_images;
-    if (!recorder_.start(recording_path, ro, {{"deepnav.board", {{"yaml", board_text}}}},
+    if (!recorder_.start(recording_path, recordingOptions(c), {{"deepnav.board", {{"yaml", board_text}}}},
                          static_cast<std::size_t>(c.buffers.record), static_cast<std::size_t>(c.buffers.frames),
                          &inputs_.pool, error)) {
       return false;

@@ -1,5 +1,8 @@
 #include "board/replay/bench_replay.h"
 
+#include "board/config/recording_options.h"
+#include "board/config/text_file.h"
+
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -60,13 +63,7 @@ bool initRun(const ReplayOptions& o, const RecordingReader& reader, BenchRun* ru
   run->vision_task = run->scheduler.findTask("vision");
   std::error_code ec;
   std::filesystem::create_directories(o.out_dir, ec);
-  RecordingOptions ro;
-  ro.compression = c.recording.compression;
-  ro.chunk_max_duration_s = c.recording.chunk_max_duration_s;
-  ro.chunk_size_kib = c.recording.chunk_size_kib;
-  ro.image_width_px = c.camera.width_px;
-  ro.image_height_px = c.camera.height_px;
-  ro.image_channels = c.camera.channels;
+  RecordingOptions ro = recordingOptions(c);
   ro.record_images = o.record_images;
   if (!run->writer.open(o.out_dir + "/replay.mcap", ro, error)) return false;
   run->writer.recordMetadata(kBoardMetadata, {{"yaml", run->board_text}});
@@ -195,11 +192,8 @@ void computeReplayMetrics(ReplaySummary* s) {
 bool loadReplayBoard(const std::string& board_path, const RecordingReader& reader, const std::string& recording,
                      BoardConfig* config, std::string* board_text, std::string* error) {
   if (!board_path.empty()) {
-    std::ifstream in(board_path);
-    std::stringstream text;
-    text << in.rdbuf();
-    *board_text = text.str();
-    return loadBoardConfig(board_path, config, error);
+    return readTextFile(board_path, "the board file", board_text, error) &&
+           loadBoardConfigText(*board_text, board_path, config, error);
   }
   const auto* stored = reader.metadata(kBoardMetadata);
   if (stored && stored->count("yaml")) {

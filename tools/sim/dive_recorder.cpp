@@ -1,10 +1,10 @@
 #include "tools/sim/dive_recorder.h"
 
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 
 #include "board/config/board_config.h"
+#include "board/config/recording_options.h"
+#include "board/config/text_file.h"
 #include "drivers/recording/recording_writer.h"
 #include "tools/sim/scenario_loader.h"
 #include "tools/sim/sensor_simulator.h"
@@ -21,25 +21,9 @@ Eigen::Vector3d sceneToOdomOffset(const SensorSimulator& sim) {
 }
 
 TruthSample toTruth(const GroundTruthSample& g, const Eigen::Vector3d& scene_to_odom_m) {
-  TruthSample t;
-  t.t_us = g.t_us;
-  t.p_robot_in_odom_m = g.p_robot_in_odom_m - scene_to_odom_m;
-  t.q_odom_robot = g.q_odom_robot;
-  t.v_robot_in_odom_mps = g.v_robot_in_odom_mps;
-  t.w_robot_radps = g.w_robot_radps;
+  TruthSample t = g;
+  t.p_robot_in_odom_m -= scene_to_odom_m;
   return t;
-}
-
-bool readText(const std::string& path, std::string* text, std::string* error) {
-  std::ifstream in(path);
-  if (!in) {
-    if (error) *error = path + ": cannot open";
-    return false;
-  }
-  std::stringstream s;
-  s << in.rdbuf();
-  *text = s.str();
-  return true;
 }
 
 // Sensor samples become loop inputs; the camera ticks wait for the renderer.
@@ -67,16 +51,14 @@ bool recordDive(const DiveRecordOptions& o, DiveRecordSummary* summary, std::str
   if (!loadScenario(o.scenario_path, &scenario, error)) return false;
   std::string board_text;
   BoardConfig board;
-  if (!readText(o.board_path, &board_text, error) || !loadBoardConfig(o.board_path, &board, error)) return false;
+  if (!readTextFile(o.board_path, "the board file", &board_text, error) ||
+      !loadBoardConfigText(board_text, o.board_path, &board, error)) {
+    return false;
+  }
   SensorSimulator sim;
   if (!sim.init(scenario, o.seed, error)) return false;
   RecordingWriter writer;
-  RecordingOptions ro;
-  ro.compression = board.recording.compression;
-  ro.image_width_px = board.camera.width_px;
-  ro.image_height_px = board.camera.height_px;
-  ro.image_channels = board.camera.channels;
-  if (!writer.open(o.out_path, ro, error)) return false;
+  if (!writer.open(o.out_path, recordingOptions(board), error)) return false;
   writer.recordMetadata("deepnav.board", {{"yaml", board_text}, {"path", o.board_path}});
   writer.recordMetadata("deepnav.sim", {{"scenario", o.scenario_path}, {"seed", std::to_string(o.seed)}});
   const Eigen::Vector3d scene_to_odom_m = sceneToOdomOffset(sim);
