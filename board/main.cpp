@@ -5,6 +5,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "board/cli/stereo_command.h"
 #include "board/config/board_config.h"
 #include "board/replay/bench_replay.h"
 #include "board/replay/realtime_replay.h"
@@ -78,6 +79,15 @@ int main(int argc, char** argv) {
   rp->add_flag("--rerun", replay.rerun, "re-run vision and ticks even if the recording holds outputs");
   rp->add_flag("--record-images", replay.record_images, "copy the stereo images into the output recording");
 
+  deepnav::StereoCommandOptions stereo;
+  auto* st = app.add_subcommand("stereo", "dense disparity of a rectified stereo pair, written as PFM");
+  st->add_option("left", stereo.left_path, "left image")->required()->check(CLI::ExistingFile);
+  st->add_option("right", stereo.right_path, "right image")->required()->check(CLI::ExistingFile);
+  st->add_option("--method", stereo.method, "elas | sgbm | sgbm-wls")
+      ->check(CLI::IsMember({"elas", "sgbm", "sgbm-wls"}));
+  st->add_option("--max-disp", stereo.max_disparity_px, "disparity search range (px)")->check(CLI::Range(1, 256));
+  st->add_option("--out", stereo.out_path, "output .pfm (invalid pixels written as +inf)")->required();
+
   std::string iqa_path;
   auto* iq = app.add_subcommand("iqa", "MDM image quality of one image, as JSON");
   iq->add_option("image", iqa_path, "image file")->required();
@@ -94,6 +104,7 @@ int main(int argc, char** argv) {
     return runReplay(replay);
   }
   if (*iq) return runIqa(iqa_path);
+  if (*st) return deepnav::runStereoCommand(stereo);
   if (*cf) {
     if (!list && board_path.empty()) {
       std::fprintf(stderr, "deepnav config: give a board file or --list\n");
