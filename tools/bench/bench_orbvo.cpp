@@ -1,0 +1,129 @@
+// ORB stereo visual odometry at the DexROV camera size (688x516), one core (OpenCV threading off).
+// Target: <= 30 ms per stereo pair (the paper's ORB odometry: 145 ms). The sequence is the unit tests'
+// textured plane scene along a smooth trajectory, played back and forth so the odometry keeps tracking
+// (keyframe insertions and their bundle adjustments are part of the average).
+#include <cmath>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+#include <opencv2/core.hpp>
+
+#include "vision/orbvo/grid_orb_extractor.h"
+#include "vision/orbvo/orb_stereo_odometry.h"
+#include "vision/orbvo/stereo_feature_matcher.h"
+#include "vision/orbvo/synthetic_plane_scene.h"
+
+namespace {
+
+constexpr int kFrames = 40;
+
+struct Pair {
+  cv::Mat left, right;
+};
+
+// About 1-2 cm and 0.2-0.4 deg per frame (the unit tests' trajectory).
+Pair renderFrame(const deepnav::SyntheticPlaneScene& scene, int k) {
+  const double s = k;
+  const double deg = 3.14159265358979 / 180.0;
+  const Eigen::Vector3d p(0.25 * std::sin(0.08 * s), 0.08 * std::sin(0.13 * s), 0.15 * (1.0 - std::cos(0.06 * s)));
+  const Eigen::Quaterniond q = Eigen::AngleAxisd(4.0 * deg * std::sin(0.07 * s), Eigen::Vector3d::UnitY()) *
+                               Eigen::AngleAxisd(3.0 * deg * (std::sin(0.05 * s + 0.5) - std::sin(0.5)),
+                                                 Eigen::Vector3d::UnitX()) *
+                               Eigen::AngleAxisd(2.0 * deg * std::sin(0.09 * s), Eigen::Vector3d::UnitZ());
+  Pair pair;
+  scene.render(deepnav::StereoRig{}, q, p, 90, &pair.left, &pair.right);
+  cv::RNG rng(100 + k);
+  for (cv::Mat* image : {&pair.left, &pair.right}) {
+    cv::Mat noise(image->size(), CV_16SC1), sum;
+    rng.fill(noise, cv::RNG::NORMAL, 0.0, 1.5);
+    image->convertTo(sum, CV_16SC1);
+    sum += noise;
+    sum.convertTo(*image, CV_8UC1);
+  }
+  return pair;
+}
+
+const std::vector<Pair>& sequence() {
+  static const std::vector<Pair> frames = [] {
+    const deepnav::SyntheticPlaneScene scene = deepnav::makeOrbVoTestScene(7, 0.6);
+    std::vector<Pair> f;
+    for (int k = 0; k < kFrames; ++k) f.push_back(renderFrame(scene, k));
+    return f;
+  }();
+  return frames;
+}
+
+void BM_OrbVoFrame(benchmark::State& state) {
+  deepnav::OrbStereoOdometry vo;
+  std::string error;
+  if (!vo.init(deepnav::OrbVoConfig(), deepnav::StereoRig{}, &error)) state.SkipWithError(error.c_str());
+  const std::vector<Pair>& frames = sequence();
+  int k = 0;
+  int step = 1;
+  deepnav::TimeUs t_us = 0;
+  double tracked = 0.0;
+  double keyframes = 0.0;
+  double lost = 0.0;
+  deepnav::OrbVoOutput out;
+  for (auto _ : state) {
+    vo.process(t_us, frames[k].left, frames[k].right, &out);
+    benchmark::DoNotOptimize(out);
+    tracked += out.tracked_features;
+    keyframes += out.keyframe_inserted;
+    lost += out.status == deepnav::OrbVoStatus::kLost;
+    t_us += 100'000;
+    if (k + step < 0 || k + step >= kFrames) step = -step;  // back and forth
+    k += step;
+  }
+  state.counters["tracked"] = benchmark::Counter(tracked, benchmark::Counter::kAvgIterations);
+  state.counters["keyframe_rate"] = benchmark::Counter(keyframes, benchmark::Counter::kAvgIterations);
+  state.counters["lost_rate"] = benchmark::Counter(lost, benchmark::Counter::kAvgIterations);
+}
+
+void BM_OrbExtractOneImage(benchmark::State& state) {
+  deepnav::GridOrbExtractor extractor;
+  if (!extractor.init(deepnav::OrbExtractorConfig(), 688, 516)) state.SkipWithError("init");
+  std::vector<deepnav::OrbFeature> features;
+  std::vector<deepnav::OrbDescriptor> descriptors;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(extractor.extract(sequence()[0].left, &features, &descriptors));
+  }
+  state.counters["features"] = static_cast<double>(features.size());
+}
+
+void BM_StereoMatch(benchmark::State& state) {
+  deepnav::GridOrbExtractor extractor;
+  if (!extractor.init(deepnav::OrbExtractorConfig(), 688, 516)) state.SkipWithError("init");
+  deepnav::StereoFeatureMatcher matcher;
+  if (!matcher.init(deepnav::StereoMatchConfig(), deepnav::StereoRig{}, extractor.capacity(), 1.2)) {
+    state.SkipWithError("init");
+  }
+  std::vector<deepnav::OrbFeature> left, right;
+  std::vector<deepnav::OrbDescriptor> left_desc, right_desc;
+  extractor.extract(sequence()[0].left, &left, &left_desc);
+  extractor.extract(sequence()[0].right, &right, &right_desc);
+  std::vector<float> u_right_px;
+  std::vector<Eigen::Vector3d> p_in_cam_m;
+  int matches = 0;
+  for (auto _ : state) {
+    matches = matcher.match(sequence()[0].left, sequence()[0].right, left, left_desc, right, right_desc, &u_right_px,
+                            &p_in_cam_m);
+    benchmark::DoNotOptimize(matches);
+  }
+  state.counters["matches"] = matches;
+}
+
+}  // namespace
+
+BENCHMARK(BM_OrbVoFrame)->Unit(benchmark::kMillisecond)->MinTime(3.0);
+BENCHMARK(BM_OrbExtractOneImage)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_StereoMatch)->Unit(benchmark::kMillisecond);
+
+int main(int argc, char** argv) {
+  cv::setNumThreads(0);  // one core, as on the vehicle's vision worker
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,0 +1,141 @@
+#include "vision/orbvo/grid_orb_extractor.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <opencv2/features2d.hpp>
+#include <opencv2/imgproc.hpp>
+
+namespace deepnav {
+namespace {
+
+constexpr int kFastRadiusPx = 3;  // FAST-9 samples a circle of radius 3
+
+bool validConfig(const OrbExtractorConfig& c) {
+  return c.grid_cols >= 1 && c.grid_cols <= 64 && c.grid_rows >= 1 && c.grid_rows <= 64 &&
+         c.max_features_per_cell >= 1 && c.n_levels >= 1 && c.n_levels <= 8 && c.scale_factor > 1.0 &&
+         c.scale_factor <= 2.0 && c.fast_threshold_max >= 1 && c.fast_threshold_max <= 255 &&
+         c.fast_threshold_min >= 1 && c.fast_threshold_min <= c.fast_threshold_max && c.fast_contrast_gain > 0.0 &&
+         c.smoothing_sigma_px > 0.0;
+}
+
+}  // namespace
+
+bool GridOrbExtractor::init(const OrbExtractorConfig& config, int width_px, int height_px) {
+  if (!validConfig(config)) return false;
+  const int min_side = 2 * SteeredBrief::kBorderPx + 8;
+  if (width_px < min_side || height_px < min_side) return false;
+  config_ = config;
+  width_px_ = width_px;
+  height_px_ = height_px;
+  levels_.assign(config.n_levels, cv::Mat());
+  smoothed_.assign(config.n_levels, cv::Mat());
+  scales_.assign(config.n_levels, 1.0);
+  cell_budget_.assign(config.n_levels, 0);
+  capacity_ = 0;
+  for (int l = 0; l < config.n_levels; ++l) {
+    scales_[l] = std::pow(config.scale_factor, l);
+    const int w = static_cast<int>(std::lround(width_px / scales_[l]));
+    const int h = static_cast<int>(std::lround(height_px / scales_[l]));
+    if (w < min_side || h < min_side) return false;
+    if (l > 0) levels_[l].create(h, w, CV_8UC1);
+    smoothed_[l].create(h, w, CV_8UC1);
+    cell_budget_[l] =
+        std::max(1, static_cast<int>(std::lround(config.max_features_per_cell / (scales_[l] * scales_[l]))));
+    capacity_ += cell_budget_[l] * config.grid_cols * config.grid_rows;
+  }
+  cell_threshold_.assign(static_cast<std::size_t>(config.n_levels) * config.grid_cols * config.grid_rows, 0);
+  fast_corners_.reserve(static_cast<std::size_t>(width_px) * height_px / 16 + 64);
+  cell_corners_.reserve(fast_corners_.capacity());
+  return true;
+}
+
+int GridOrbExtractor::extract(const cv::Mat& grey, std::vector<OrbFeature>* features,
+                              std::vector<OrbDescriptor>* descriptors) {
+  features->clear();
+  descriptors->clear();
+  if (grey.type() != CV_8UC1 || grey.cols != width_px_ || grey.rows != height_px_) return -1;
+  levels_[0] = grey;  // a header: level 0 is the caller's image
+  for (int l = 1; l < config_.n_levels; ++l) {
+    cv::resize(levels_[l - 1], levels_[l], levels_[l].size(), 0.0, 0.0, cv::INTER_LINEAR);
+  }
+  for (int l = 0; l < config_.n_levels; ++l) extractLevel(l, features, descriptors);
+  levels_[0] = cv::Mat();
+  return static_cast<int>(features->size());
+}
+
+void GridOrbExtractor::extractLevel(int level, std::vector<OrbFeature>* features,
+                                    std::vector<OrbDescriptor>* descriptors) {
+  const cv::Mat& image = levels_[level];
+  cv::GaussianBlur(image, smoothed_[level], cv::Size(0, 0), config_.smoothing_sigma_px);
+  const int border = SteeredBrief::kBorderPx;
+  const int usable_w = image.cols - 2 * border;
+  const int usable_h = image.rows - 2 * border;
+  const double scale = scales_[level];
+  for (int gy = 0; gy < config_.grid_rows; ++gy) {
+    const int y0 = border + usable_h * gy / config_.grid_rows;
+    const int y1 = border + usable_h * (gy + 1) / config_.grid_rows;
+    for (int gx = 0; gx < config_.grid_cols; ++gx) {
+      const int x0 = border + usable_w * gx / config_.grid_cols;
+      const int x1 = border + usable_w * (gx + 1) / config_.grid_cols;
+      int* threshold = &cell_threshold_[(level * config_.grid_rows + gy) * config_.grid_cols + gx];
+      detectCell(image, cv::Rect(x0, y0, x1 - x0, y1 - y0), cell_budget_[level], threshold);
+      for (const cv::KeyPoint& kp : cell_corners_) {
+        const int x = static_cast<int>(kp.pt.x);
+        const int y = static_cast<int>(kp.pt.y);
+        OrbFeature f;
+        f.angle_rad = brief_.orientationRad(image, x, y);
+        // Centre of level pixel x in level-0 pixels, for cv::resize's pixel-area alignment.
+        f.u_px = static_cast<float>((x + 0.5) * scale - 0.5);
+        f.v_px = static_cast<float>((y + 0.5) * scale - 0.5);
+        f.response = kp.response;
+        f.level = level;
+        features->push_back(f);
+        descriptors->emplace_back();
+        brief_.describe(smoothed_[level], x, y, f.angle_rad, &descriptors->back());
+      }
+    }
+  }
+}
+
+// Leaves in cell_corners_ the `budget` strongest corners inside `cell` (level coordinates).
+void GridOrbExtractor::detectCell(const cv::Mat& image, const cv::Rect& cell, int budget, int* cell_threshold) {
+  cell_corners_.clear();
+  // FAST cannot fire within 3 px of its image's edge: widen the ROI so the whole cell is searched.
+  const cv::Rect roi(cell.x - kFastRadiusPx, cell.y - kFastRadiusPx, cell.width + 2 * kFastRadiusPx,
+                     cell.height + 2 * kFastRadiusPx);
+  if (*cell_threshold == 0) {
+    cv::Scalar mean, stddev;
+    cv::meanStdDev(image(cell), mean, stddev);
+    *cell_threshold = std::max(1, static_cast<int>(std::lround(config_.fast_contrast_gain * stddev[0])));
+  }
+  int threshold = std::clamp(*cell_threshold, config_.fast_threshold_min, config_.fast_threshold_max);
+  bool first_pass = true;
+  for (;;) {
+    cv::FAST(image(roi), fast_corners_, threshold, true, cv::FastFeatureDetector::TYPE_9_16);
+    cell_corners_.clear();
+    for (cv::KeyPoint kp : fast_corners_) {
+      kp.pt.x += static_cast<float>(roi.x);
+      kp.pt.y += static_cast<float>(roi.y);
+      if (cell.contains(cv::Point(static_cast<int>(kp.pt.x), static_cast<int>(kp.pt.y)))) {
+        cell_corners_.push_back(kp);
+      }
+    }
+    if (first_pass) {
+      const int found = static_cast<int>(cell_corners_.size());
+      const int step = std::max(1, threshold / 8);
+      if (found > 4 * budget) *cell_threshold = std::min(threshold + step, config_.fast_threshold_max);
+      if (found < 2 * budget) *cell_threshold = std::max(threshold - step, config_.fast_threshold_min);
+      first_pass = false;
+    }
+    if (2 * static_cast<int>(cell_corners_.size()) >= budget || threshold <= config_.fast_threshold_min) break;
+    threshold = config_.fast_threshold_min;
+  }
+  if (static_cast<int>(cell_corners_.size()) > budget) {
+    std::nth_element(cell_corners_.begin(), cell_corners_.begin() + budget, cell_corners_.end(),
+                     [](const cv::KeyPoint& a, const cv::KeyPoint& b) { return a.response > b.response; });
+    cell_corners_.resize(budget);
+  }
+}
+
+}  // namespace deepnav

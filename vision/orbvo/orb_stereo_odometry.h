@@ -1,0 +1,148 @@
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <opencv2/core.hpp>
+
+#include "vision/orbvo/feature_grid.h"
+#include "vision/orbvo/grid_orb_extractor.h"
+#include "vision/orbvo/local_bundle_adjuster.h"
+#include "vision/orbvo/orb_vo_config.h"
+#include "vision/orbvo/orb_vo_output.h"
+#include "vision/orbvo/pnp_ransac.h"
+#include "vision/orbvo/pose_refiner.h"
+#include "vision/orbvo/stereo_feature_matcher.h"
+#include "vision/orbvo/stereo_rig.h"
+#include "vision/orbvo/vo_map.h"
+#include "vision/types/stereo_frame.h"
+
+namespace deepnav {
+
+// ORB stereo visual odometry with a local map (after the DexROV ORB odometry, Di Lillo et al. /
+// Mur-Artal & Tardos' ORB-SLAM2 design, written from the papers). Per stereo pair:
+//  1. bucketed ORB on both images (GridOrbExtractor), row-band stereo matching with subpixel
+//     disparity and triangulation (StereoFeatureMatcher);
+//  2. tracking: the previous frame's map points projected by a constant-velocity prediction and
+//     matched in a window; pose by PnP RANSAC then Huber Gauss-Newton on the stereo reprojection
+//     error (refineCameraPose); then the points of the local keyframes projected by that pose,
+//     matched in a small window, and a second refinement whose inliers are the tracked features;
+//  3. keyframe policy; a keyframe adds the untracked stereo points to the map and runs a windowed
+//     bundle adjustment of the newest keyframes, the oldest fixed (LocalBundleAdjuster);
+//  4. when tracking fails: relocalisation against every stored keyframe (descriptor ranking, then PnP
+//     RANSAC and refinement on the best candidates).
+// Output: relative pose of this frame's left camera in the previous (or last tracked) frame's, its
+// 6x6 covariance, the number of tracked features and a status.
+//
+// Pure: no threads, files or clocks. Allocation: every buffer of our own is sized in init(); in the
+// steady state the remaining allocations are OpenCV's (cv::FAST, cv::GaussianBlur, cv::resize on
+// some builds, cv::solvePnPRansac), documented in the README of this folder.
+class OrbStereoOdometry {
+ public:
+  // False with *error naming the bad field or size.
+  bool init(const OrbVoConfig& config, const StereoRig& rig, std::string* error);
+
+  // Forgets the map: the next frame starts a new one.
+  void reset();
+
+  // One rectified stereo pair of the rig's size, CV_8UC1 or CV_8UC3. Returns false (status kLost)
+  // for a frame that cannot be used (wrong size or type, not rectified).
+  bool process(TimeUs t_us, const cv::Mat& left, const cv::Mat& right, OrbVoOutput* out);
+  bool process(const StereoFrame& frame, OrbVoOutput* out);
+
+  const VoMap& map() const { return map_; }
+  const OrbVoConfig& config() const { return config_; }
+
+ private:
+  struct FrameState {
+    TimeUs t_us = 0;
+    std::vector<OrbFeature> features;
+    std::vector<OrbDescriptor> descriptors;
+    std::vector<float> u_right_px;
+    std::vector<Eigen::Vector3d> p_in_cam_m;
+    std::vector<int> map_point;       // per feature, -1 none
+    std::vector<int> match_distance;  // per feature, Hamming distance of its map point match
+    std::vector<std::uint8_t> available;  // per feature: may still take a map point
+    CameraPoseEstimate pose;
+    int tracked = 0;
+    int stereo_points = 0;
+  };
+  struct TrackedPose {
+    TimeUs t_us = 0;
+    CameraPoseEstimate pose;
+  };
+
+  void reserveFrame(FrameState* frame, int capacity) const;
+  bool detect(TimeUs t_us, const cv::Mat& left, const cv::Mat& right);
+  bool startMap(OrbVoOutput* out);
+  bool trackFrame();
+  bool relocalise();
+  int searchPreviousFrame(const CameraPoseEstimate& predicted, double radius_px);
+  int searchLocalMap(const CameraPoseEstimate& pose);
+  void searchKeyframePoints(const Keyframe& kf, const CameraPoseEstimate& pose, int stamp);
+  enum class PoseStart { kGiven, kRansacOrGiven, kRansacOnly };
+  bool estimatePose(PoseStart start, CameraPoseEstimate* pose);
+  int rankKeyframe(const Keyframe& kf, int stride) const;
+  int matchKeyframe(const Keyframe& kf);
+  void clearAssociations();
+  bool keyframeNeeded() const;
+  void insertKeyframe();
+  void bundleAdjustLocalWindow();
+  void fillOutput(OrbVoOutput* out) const;
+  double sigmaOfLevel(int level) const { return level_sigma_px_[level]; }
+
+  bool ready_ = false;
+  OrbVoConfig config_{};
+  StereoRig rig_{};
+  int capacity_ = 0;
+  GridOrbExtractor extractor_;        // left image
+  GridOrbExtractor right_extractor_;  // right image (its own FAST thresholds and a larger budget)
+  StereoFeatureMatcher stereo_;
+  FeatureGrid grid_;
+  PnpRansac pnp_;
+  LocalBundleAdjuster bundle_adjuster_;
+  VoMap map_;
+
+  cv::Mat grey_left_, grey_right_;
+  std::vector<OrbFeature> right_features_;
+  std::vector<OrbDescriptor> right_descriptors_;
+  FrameState cur_, prev_;
+  std::vector<double> level_scale_;
+  std::vector<double> level_sigma_px_;
+
+  // Pose estimation scratch.
+  std::vector<PoseObservation> observations_;
+  std::vector<int> observation_feature_;
+  std::vector<std::uint8_t> inlier_;
+
+  // Bundle adjustment scratch.
+  std::vector<Eigen::Matrix3d> ba_R_;
+  std::vector<Eigen::Vector3d> ba_t_;
+  std::vector<Eigen::Vector3d> ba_points_;
+  std::vector<int> ba_point_id_;
+  std::vector<BaObservation> ba_observations_;
+  std::vector<int> ba_source_age_;
+  std::vector<int> ba_source_feature_;
+  std::vector<std::uint8_t> ba_outlier_;
+
+  // Relocalisation scratch.
+  std::vector<int> reloc_score_;       // per keyframe age
+  std::vector<int> reloc_owner_;       // per keyframe feature: best current feature
+  std::vector<int> reloc_owner_distance_;
+
+  // Tracking state.
+  bool initialised_ = false;
+  bool lost_ = false;
+  int lost_frames_ = 0;
+  int frames_since_keyframe_ = 0;
+  bool keyframe_inserted_ = false;
+  bool has_velocity_ = false;
+  Eigen::Matrix3d R_velocity_ = Eigen::Matrix3d::Identity();  // T_cur_prev of the last step
+  Eigen::Vector3d t_velocity_ = Eigen::Vector3d::Zero();
+  TrackedPose last_tracked_;
+  int anchor_keyframe_id_ = -1;  // keyframe found by the last relocalisation, kept in the local map
+  int anchor_until_keyframe_id_ = -1;
+};
+
+}  // namespace deepnav
