@@ -1,0 +1,18 @@
+#pragma once
+#include <string>
+
+namespace deepnav {
+
+// Criteria of the stage machine (nav/stage/stage_machine.h), unit in the name, default here.
+// Stage 2 needs the panel fixed and the caller's map-ready flag; these add criteria on how the
+// workspace map was built in this run (they do not apply to a workspace restored from a saved panel
+// pose and map).
+struct StageConfig {
+  double min_workspace_time_s = 30.0;    // time spent in stage 1 before stage 2, [0, 86400] s
+  double min_faces_seen_fraction = 0.5;  // fraction of the panel's faces seen in stage 1, [0, 1]
+};
+
+// False with a message naming the key when a field is out of range.
+bool validateStageConfig(const StageConfig& config, std::string* error);
+
+}  // namespace deepnav
