@@ -101,7 +101,12 @@ bool refineCameraPose(const StereoRig& rig, const PoseRefinerConfig& config, con
   int inliers = 0;
   for (int i = 0; i < count; ++i) inliers += inlier[i];
   pose->inliers = inliers;
-  pose->residual_variance = cost / (rows - 6);
+  // The gates keep only the residuals below them: for 2 dof and gate g, E[chi2 | chi2 <= g] / 2 =
+  // (1 - e^(-g/2) (1 + g/2)) / (1 - e^(-g/2)) (0.84 for the 95 % gate), which would shrink s^2 below 1
+  // for a right noise model. Dividing by it keeps the covariance consistent.
+  const double tail = std::exp(-0.5 * config.chi2_mono);
+  const double truncation = (1.0 - tail * (1.0 + 0.5 * config.chi2_mono)) / (1.0 - tail);
+  pose->residual_variance = cost / (rows - 6) / truncation;
   pose->rms_px = std::sqrt(squared_px / rows);
   pose->cov_xi = pose->residual_variance * ldlt.solve(Eigen::Matrix<double, 6, 6>::Identity());
   return pose->cov_xi.allFinite();

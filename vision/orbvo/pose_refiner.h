@@ -41,7 +41,8 @@ struct CameraPoseEstimate {
 // weight w = 1 for |r|/sigma <= k, k sigma / |r| beyond (Huber 1964). After each round every
 // observation is classified against its chi-square gate (inlier[i] = 1 or 0); outliers sit out the
 // next round. The covariance is the Gauss-Newton one scaled by the residual variance,
-//   cov_xi = s^2 (J^T W J)^-1,  s^2 = sum w |r|^2 / sigma^2 / (m - 6),  m = number of residual rows.
+//   cov_xi = s^2 (J^T W J)^-1,  s^2 = sum w |r|^2 / sigma^2 / (m - 6) / c,  m = residual rows,
+// c < 1 the mean of a chi-square truncated at the gate (the gates drop the tail of the inliers too).
 // Returns false (pose left at its last iterate) when fewer than min_inliers remain or the normal
 // equations are singular. Does not allocate.
 bool refineCameraPose(const StereoRig& rig, const PoseRefinerConfig& config, const PoseObservation* observations,

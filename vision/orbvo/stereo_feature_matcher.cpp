@@ -11,7 +11,7 @@ bool StereoFeatureMatcher::init(const StereoMatchConfig& config, const StereoRig
   if (config.row_band_px < 0.0 || config.min_depth_m <= 0.0 || config.max_depth_m <= config.min_depth_m ||
       config.max_hamming < 0 || config.ratio <= 0.0 || config.ratio > 1.0 || config.max_level_difference < 0 ||
       config.sad_half_window_px < 1 || config.sad_half_window_px > 15 || config.sad_search_px < 1 ||
-      config.sad_search_px > 8 || rig.baseline_m <= 0.0 || rig.fx_px <= 0.0 || rig.height_px < 1 ||
+      config.sad_search_px > 8 || config.sad_distinct_ratio <= 0.0 || config.sad_distinct_ratio > 1.0 || rig.baseline_m <= 0.0 || rig.fx_px <= 0.0 || rig.height_px < 1 ||
       max_features < 1 || level_scale_factor < 1.0) {
     return false;
   }
@@ -149,6 +149,8 @@ bool StereoFeatureMatcher::refineRightColumn(const cv::Mat& left_grey, const cv:
     if (k > -search && sad < cost[best_k + search]) best_k = k;
   }
   if (best_k == -search || best_k == search) return false;
+  // A true match stands out of its neighbourhood; a flat or repetitive row does not.
+  if (cost[best_k + search] > config_.sad_distinct_ratio * std::min(cost[0], cost[2 * search])) return false;
   const double c_minus = cost[best_k + search - 1];
   const double c0 = cost[best_k + search];
   const double c_plus = cost[best_k + search + 1];

@@ -18,6 +18,7 @@ struct StereoMatchConfig {
   int max_level_difference = 1;  // pyramid levels between the two corners
   int sad_half_window_px = 5;  // subpixel refinement window (2w+1)^2, [1, 15]
   int sad_search_px = 2;       // columns searched on each side of the matched right corner, [1, 8]
+  double sad_distinct_ratio = 0.7;  // the minimum cost must be below this fraction of both end costs, (0, 1]
 };
 
 // Matches left corners to right corners of a rectified pair along the rows: candidates lie in the
@@ -26,7 +27,8 @@ struct StereoMatchConfig {
 // corner. The disparity is then refined to subpixel on the level-0 images: zero-mean SAD of a
 // (2w+1)^2 window at columns u_r + k, k in [-search, search], and the parabola through the minimum
 // and its two neighbours, k* = (c_-1 - c_+1) / (2 (c_-1 - 2 c_0 + c_+1)). A minimum on the edge of the
-// search range, or a flat cost, rejects the match. Matched corners are triangulated in the left frame.
+// search range, or one above sad_distinct_ratio times the costs at both ends of the range (a flat or
+// ambiguous row, e.g. a corner matched on the wrong row), rejects the match. Matched corners are triangulated in the left frame.
 // Allocation: every buffer is sized in init(); match() does not allocate.
 class StereoFeatureMatcher {
  public:
