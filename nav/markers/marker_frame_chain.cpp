@@ -36,4 +36,12 @@ Eigen::Isometry3d panelPoseFromMarker(const Eigen::Isometry3d& T_odom_robot,
   return T_odom_robot * T_robot_cam * T_cam_marker * T_panel_marker.inverse(Eigen::Isometry);
 }
 
+Eigen::Isometry3d predictedCameraMarkerPose(const Eigen::Isometry3d& T_odom_robot,
+                                            const Eigen::Isometry3d& T_robot_cam,
+                                            const Eigen::Isometry3d& T_odom_panel,
+                                            const Eigen::Isometry3d& T_panel_marker) {
+  return T_robot_cam.inverse(Eigen::Isometry) * T_odom_robot.inverse(Eigen::Isometry) *
+         T_odom_panel * T_panel_marker;
+}
+
 }  // namespace deepnav

@@ -36,4 +36,12 @@ Eigen::Isometry3d panelPoseFromMarker(const Eigen::Isometry3d& T_odom_robot,
                                       const Eigen::Isometry3d& T_cam_marker,
                                       const Eigen::Isometry3d& T_panel_marker);
 
+// The marker's pose in the camera predicted from the robot and panel poses (e.g. to choose between
+// the two IPPE solutions, marker_ambiguity.h):
+//   T_cam_marker = T_cam_robot * T_robot_odom * T_odom_panel * T_panel_marker.
+Eigen::Isometry3d predictedCameraMarkerPose(const Eigen::Isometry3d& T_odom_robot,
+                                            const Eigen::Isometry3d& T_robot_cam,
+                                            const Eigen::Isometry3d& T_odom_panel,
+                                            const Eigen::Isometry3d& T_panel_marker);
+
 }  // namespace deepnav
