@@ -1,0 +1,70 @@
+#include "vision/planes/plane_extractor.h"
+
+namespace deepnav {
+
+bool PlaneExtractor::init(const PlaneExtractionConfig& config, const StereoGeometry& geometry,
+                          int rows, int cols, int step_px) {
+  ready_ = false;
+  if (!geometry.isValid() || config.max_polygons < 1 || config.max_polygon_points < 1 ||
+      config.disparity_noise_px <= 0.0 || config.point_noise_floor_m < 0.0) {
+    return false;
+  }
+  if (!grower_.init(config, geometry.focalBaseline(), rows, cols, step_px)) return false;
+  if (!tracer_.init(rows, cols)) return false;
+  config_ = config;
+  step_px_ = step_px;
+  noise_.disparity_noise_per_fb = config.disparity_noise_px / geometry.focalBaseline();
+  noise_.floor_m = config.point_noise_floor_m;
+  neighbour_planes_.assign(config.max_planes, Eigen::Vector4f::Zero());
+  ready_ = true;
+  return true;
+}
+
+bool PlaneExtractor::allocatePlaneSet(PlaneSet* set) const {
+  return ready_ && set != nullptr &&
+         set->allocate(config_.max_planes, config_.max_polygons, config_.max_polygon_points);
+}
+
+int PlaneExtractor::extract(const OrganizedCloud& cloud, PlaneSet* planes) {
+  if (!ready_ || planes == nullptr || cloud.step_px != step_px_ ||
+      planes->capacity() < config_.max_planes) {
+    return -1;
+  }
+  planes->clear();
+  const int regions = grower_.grow(cloud);
+  if (regions < 0) return -1;
+  plane_of_label_.fill(-1);
+  region_of_label_.fill(-1);
+  for (int i = 0; i < regions; ++i) region_of_label_[grower_.region(i).label] = i;
+  for (int i = 0; i < regions; ++i) {
+    const PlaneRegion& region = grower_.region(i);
+    Plane* plane = planes->addPlane();
+    if (plane == nullptr) break;
+    // Neighbouring planes (the grower's estimates): their intersections are kept out of the fit.
+    NeighbourBand band;
+    band.planes = neighbour_planes_.data();
+    band.band_m = static_cast<float>(config_.max_point_distance_m);
+    band.band_sigmas = static_cast<float>(config_.distance_sigmas + 3.0);
+    const std::bitset<256>& adjacent = grower_.adjacentLabels(region.label);
+    for (int l = 1; l < 256 && band.count < config_.max_planes; ++l) {
+      if (!adjacent.test(l) || region_of_label_[l] < 0) continue;
+      const PlaneRegion& other = grower_.region(region_of_label_[l]);
+      neighbour_planes_[band.count++] << other.normal.cast<float>(),
+          static_cast<float>(other.normal.dot(other.sums.mean()));
+    }
+    if (!fitPlaneWithUncertainty(cloud, grower_.members() + region.member_begin,
+                                 region.member_count, region.sums, region.normal, noise_, plane,
+                                 band)) {
+      planes->removeLast();
+      continue;
+    }
+    plane->label = region.label;
+    plane->bbox_cells = region.bbox_cells;
+    plane_of_label_[region.label] = planes->size() - 1;
+  }
+  const double min_hole_area_px2 = config_.min_hole_area_px;
+  tracer_.trace(grower_.labels(), plane_of_label_.data(), step_px_, min_hole_area_px2, planes);
+  return planes->size();
+}
+
+}  // namespace deepnav

@@ -1,0 +1,45 @@
+#pragma once
+#include <array>
+#include <vector>
+
+#include "vision/cloud/organized_cloud.h"
+#include "vision/cloud/stereo_geometry.h"
+#include "vision/planes/plane_contour_tracer.h"
+#include "vision/planes/plane_extraction_config.h"
+#include "vision/planes/plane_fit.h"
+#include "vision/planes/plane_region_grower.h"
+#include "vision/planes/plane_set.h"
+
+namespace deepnav {
+
+// Planes of one organised cloud: region growing (PlaneRegionGrower), a weighted fit with the
+// plane-parameter Hessian and covariance per region (fitPlaneWithUncertainty), then boundary and
+// hole polygons (PlaneContourTracer). Every buffer is sized in init(); extract() allocates nothing.
+class PlaneExtractor {
+ public:
+  // rows, cols, step_px: the cloud grid (CloudFromDisparity::gridRows() ...); geometry gives the
+  // stereo noise model (f B).
+  bool init(const PlaneExtractionConfig& config, const StereoGeometry& geometry, int rows, int cols,
+            int step_px);
+  // Sizes a PlaneSet for this config (start-up).
+  bool allocatePlaneSet(PlaneSet* set) const;
+  // Fills *planes (cleared first); returns the number of planes, -1 on a size mismatch.
+  int extract(const OrganizedCloud& cloud, PlaneSet* planes);
+
+  const cv::Mat& labels() const { return grower_.labels(); }  // label of plane i: planes[i].label
+  const PlaneRegionGrower& grower() const { return grower_; }
+  const PlaneExtractionConfig& config() const { return config_; }
+
+ private:
+  bool ready_ = false;
+  PlaneExtractionConfig config_;
+  PlaneNoiseModel noise_;
+  int step_px_ = 1;
+  PlaneRegionGrower grower_;
+  PlaneContourTracer tracer_;
+  std::array<int, 256> plane_of_label_{};
+  std::array<int, 256> region_of_label_{};
+  std::vector<Eigen::Vector4f> neighbour_planes_;
+};
+
+}  // namespace deepnav
