@@ -29,6 +29,7 @@ void readEnvironment(YamlSection s, EnvironmentConfig* c) {
 void readWater(YamlSection s, WaterConfig* c) {
   const int preset = s.choice("preset", {"clear", "moderate", "murky"});
   if (preset >= 0) c->preset = static_cast<WaterPreset>(preset);
+  s.integer("fish_count", &c->fish_count, 0, 50, "(count)");
   s.finish();
 }
 

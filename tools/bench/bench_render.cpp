@@ -1,0 +1,63 @@
+// Stereo renderer speed: one 688 x 516 pair (both images, ground truth included) on one core.
+// Target: <= 50 ms per pair at the dive's dwell in front of a face (the panel fills the view) and during
+// the approach (seabed and water); grey (the sim board) and BGR.
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+#include "tools/sim/render/stereo_renderer.h"
+#include "tools/sim/sensor_simulator.h"
+
+namespace {
+
+using deepnav::sim::Scenario;
+using deepnav::sim::SensorSimulator;
+using deepnav::sim::StereoRenderer;
+
+void renderPair(benchmark::State& state, double t_s, int channels, int fish) {
+  Scenario scenario;
+  scenario.water.fish_count = fish;
+  std::string error;
+  SensorSimulator sim;
+  StereoRenderer renderer;
+  if (!sim.init(scenario, 1, &error) || !renderer.init(scenario, 1, channels, &error)) {
+    state.SkipWithError(error.c_str());
+    return;
+  }
+  deepnav::StereoFrame frame;
+  deepnav::allocateStereoFrame(frame, scenario.camera.width_px, scenario.camera.height_px, channels);
+  deepnav::sim::RenderTruth truth;
+  renderer.allocateTruth(&truth);
+  const deepnav::CameraTick tick = sim.cameraAt(static_cast<deepnav::TimeUs>(t_s * 1e6));
+  for (auto _ : state) {
+    renderer.render(tick, &frame, &truth);
+    benchmark::DoNotOptimize(frame.left.data);
+  }
+}
+
+// t = 36 s: dwell at the valves face; 57 s: around the front-left corner; 12 s: approach, 6 m out.
+void BM_RenderDwellGrey(benchmark::State& s) { renderPair(s, 36.0, 1, 0); }
+void BM_RenderCornerGrey(benchmark::State& s) { renderPair(s, 57.0, 1, 0); }
+void BM_RenderApproachGrey(benchmark::State& s) { renderPair(s, 12.0, 1, 0); }
+void BM_RenderDwellBgr(benchmark::State& s) { renderPair(s, 36.0, 3, 0); }
+void BM_RenderCornerGreyWithFish(benchmark::State& s) { renderPair(s, 57.0, 1, 8); }
+
+void BM_RendererInit(benchmark::State& state) {
+  const Scenario scenario;
+  std::string error;
+  for (auto _ : state) {
+    StereoRenderer renderer;
+    benchmark::DoNotOptimize(renderer.init(scenario, 1, 1, &error));
+  }
+}
+
+BENCHMARK(BM_RenderDwellGrey)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RenderCornerGrey)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RenderApproachGrey)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RenderDwellBgr)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RenderCornerGreyWithFish)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RendererInit)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

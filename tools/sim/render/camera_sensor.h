@@ -1,0 +1,40 @@
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include <opencv2/core.hpp>
+
+#include "tools/sim/render/water_optics.h"
+
+namespace deepnav::sim {
+
+// From the irradiance on the sensor to the 8-bit image: the lens blur (3 x 3 Gaussian [1 2 1]/4 in
+// each direction, replicated borders) giving I, sensor noise and analog gain g,
+//   S = g (I + sqrt(read^2 + shot I) n),  n ~ N(0, 1),
+// then the camera's tone curve 255 clamp(S, 0, 1)^(1/2.2), rounded. Noise values come from a table of
+// normals drawn from the seed, read from an offset hashed from (frame key, row): deterministic, no
+// random generator in the per-frame path. Buffers are allocated in init().
+class CameraSensor {
+ public:
+  bool init(int width_px, int height_px, int channels, const WaterOptics& optics, std::uint64_t seed);
+  // radiance: width * height * channels floats, row-major, channels interleaved (BGR or grey), linear.
+  // image: preallocated CV_8UC1 / CV_8UC3 of the same size.
+  void expose(const float* radiance, float gain, std::uint64_t frame_key, cv::Mat* image);
+
+  // Auto exposure: the gain that brings the mean of a radiance image (every 4th pixel) to kTargetMean,
+  // within [kMinGain, kMaxGain]. Computed per frame from the left view and used for both cameras (a
+  // synchronised rig); stateless, so a frame does not depend on the frames before it.
+  static constexpr float kTargetMean = 0.25f;  // 64 of 255
+  static constexpr float kMinGain = 0.25f;
+  static constexpr float kMaxGain = 24.0f;  // about 28 dB, a machine-vision camera's range
+  float autoExposureGain(const float* radiance) const;
+
+ private:
+  int width_ = 0, height_ = 0, channels_ = 1;
+  float read_var_ = 0.0f, shot_ = 0.0f;
+  std::vector<float> blurred_rows_;  // the horizontal pass
+  std::vector<float> normals_;       // N(0, 1) table
+  std::vector<std::uint8_t> tone_;   // 65536-entry tone curve over [0, 1]
+};
+
+}  // namespace deepnav::sim

@@ -1,0 +1,72 @@
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "nav/markers/panel_description.h"
+#include "tools/sim/render/fish_school.h"
+#include "tools/sim/render/material.h"
+#include "tools/sim/render/primitive.h"
+#include "tools/sim/render/ray_primitives.h"
+#include "tools/sim/render/seabed.h"
+#include "tools/sim/render/texture_map.h"
+#include "tools/sim/scenario.h"
+
+namespace deepnav::sim {
+
+// Where a ray meets the scene: parameter t, the primitive (or kSeabed) and the local hit.
+struct SceneHit {
+  float t = 0.0f;
+  int primitive = -1;
+  LocalHit local;  // the seabed fills only local.p (in P)
+};
+
+// The rendered world in the panel frame P (origin at the footprint centre on the seabed, x = front
+// normal, y = left normal, z up): the seabed, the panel's three faces (rects 0, 1, 2 = valves, grasping,
+// plain, painted with their markers) joined by two rounded corners and open at the back, the fixtures on
+// the faces (panel_fixtures.h) and optional fish. Textures and relief come from the seed.
+class Scene {
+ public:
+  static constexpr int kSeabed = -1;
+
+  // quiet_zone_m: the white margin painted around each marker (MarkerLayout::quiet_zone_m).
+  bool init(const Scenario& scenario, const PanelDescription& panel, double quiet_zone_m, std::uint64_t seed,
+            std::string* error);
+  // Moves the fish to time t (the only moving part).
+  void setTime(double t_s);
+
+  const std::vector<Primitive>& primitives() const { return primitives_; }
+  const Seabed& seabed() const { return seabed_; }
+  // The panel frame in the odometry (scene) frame: footprint centre on the seabed, yawed by front_yaw_deg.
+  const Eigen::Isometry3d& T_odom_panel() const { return T_odom_panel_; }
+  // Primitive index of face i's rect (its markers are painted on it).
+  static int faceRect(int face) { return face; }
+
+  // Nearest hit of o + t d (P) with t in (t_min, t_max) over everything, without culling: for queries
+  // (visibility, tests); the renderer culls per tile and calls the same primitive tests.
+  bool intersect(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t_min, float t_max,
+                 SceneHit* hit) const;
+  // Unit normal in P at a hit (turned towards the ray, except on the seabed: up).
+  Eigen::Vector3f normalAt(const SceneHit& hit, const Eigen::Vector3f& o, const Eigen::Vector3f& d) const;
+  // Albedo (BGR) at a hit; footprint_m is the size of a pixel there, to choose the texture level.
+  Eigen::Vector3f albedoAt(const SceneHit& hit, const Eigen::Vector3f& o, const Eigen::Vector3f& d,
+                           float footprint_m) const;
+
+ private:
+  bool buildPanel(const Scenario& scenario, const PanelDescription& panel, double quiet_zone_m, std::uint32_t seed,
+                  std::string* error);
+  void addFish(const Scenario& scenario, std::uint64_t seed);
+
+  std::vector<Primitive> primitives_;
+  std::vector<Material> materials_;
+  std::vector<TextureMap> textures_;
+  Seabed seabed_;
+  FishSchool fish_;
+  int first_fish_ = 0;
+  Eigen::Isometry3d T_odom_panel_ = Eigen::Isometry3d::Identity();
+};
+
+}  // namespace deepnav::sim

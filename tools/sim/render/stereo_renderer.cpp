@@ -1,0 +1,166 @@
+#include "tools/sim/render/stereo_renderer.h"
+
+#include <algorithm>
+
+#include "tools/sim/render/panel_knowledge.h"
+#include "tools/sim/render/procedural_noise.h"
+
+namespace deepnav::sim {
+
+namespace {
+constexpr float kLampOutside_m = 0.25f;  // lateral offset of each lamp beyond its camera
+constexpr float kLampAbove_m = 0.20f;
+constexpr double kMarkerCornerInset = 0.02;
+constexpr float kCornerHitTolerance_m = 0.002f;
+
+Eigen::Vector3d squareCorner(int k, double size_m) {
+  const double h = 0.5 * size_m;
+  const double xs[4] = {-h, h, h, -h}, ys[4] = {h, h, -h, -h};
+  return Eigen::Vector3d(xs[k], ys[k], 0.0);
+}
+}  // namespace
+
+bool StereoRenderer::init(const Scenario& scenario, std::uint64_t seed, int channels, std::string* error) {
+  return init(scenario, defaultMarkerLayout(), seed, channels, error);
+}
+
+bool StereoRenderer::init(const Scenario& scenario, const MarkerLayout& layout, std::uint64_t seed, int channels,
+                          std::string* error) {
+  initialised_ = false;
+  if (channels != 1 && channels != 3) {
+    if (error) *error = "renderer: channels must be 1 (grey) or 3 (BGR), got " + std::to_string(channels);
+    return false;
+  }
+  if (scenario.panel.markers_enabled && !validateMarkerLayout(layout, scenario.panel, error)) return false;
+  scenario_ = scenario;
+  seed_ = seed;
+  channels_ = channels;
+  panel_ = makePanelDescription(scenario, layout);
+  optics_ = waterOptics(scenario.water.preset);
+  if (!scene_.init(scenario, panel_, layout.quiet_zone_m, seed, error)) return false;
+  if (!view_.init(scenario.camera, channels, optics_, &scene_, error)) return false;
+  const int w = scenario.camera.width_px, h = scenario.camera.height_px;
+  if (!sensor_.init(w, h, channels, optics_, seed)) {
+    if (error) *error = "renderer: camera sensor init failed";
+    return false;
+  }
+  radiance_.assign(static_cast<std::size_t>(w) * h * channels, 0.0f);
+  depth_scratch_.assign(static_cast<std::size_t>(w) * h, 0.0f);
+  initialised_ = true;
+  return true;
+}
+
+void StereoRenderer::allocateTruth(RenderTruth* truth) const {
+  const int w = scenario_.camera.width_px, h = scenario_.camera.height_px;
+  truth->depth_m.create(h, w, CV_32F);
+  truth->disparity_px.create(h, w, CV_32F);
+  truth->right_depth_m.create(h, w, CV_32F);
+  truth->visible_marker_ids.reserve(panel_.markers.size());
+}
+
+ViewPose StereoRenderer::leftView(const CameraTick& tick) const {
+  const Eigen::Isometry3d T_panel_odom = scene_.T_odom_panel().inverse();
+  ViewPose v;
+  v.R_panel_cam = (T_panel_odom.linear() * tick.q_odom_left_cam.toRotationMatrix()).cast<float>();
+  v.p_cam_in_panel_m = (T_panel_odom * tick.p_left_cam_in_odom_m).cast<float>();
+  return v;
+}
+
+ViewPose StereoRenderer::rightView(const CameraTick& tick) const {
+  const Eigen::Isometry3d T_panel_odom = scene_.T_odom_panel().inverse();
+  ViewPose v;
+  v.R_panel_cam = (T_panel_odom.linear() * tick.q_odom_right_cam.toRotationMatrix()).cast<float>();
+  v.p_cam_in_panel_m = (T_panel_odom * tick.p_right_cam_in_odom_m).cast<float>();
+  return v;
+}
+
+LampSet StereoRenderer::lamps(const ViewPose& left) const {
+  const float b = static_cast<float>(scenario_.camera.baseline_m);
+  const Eigen::Vector3f in_cam[2] = {Eigen::Vector3f(-kLampOutside_m, -kLampAbove_m, 0.0f),
+                                     Eigen::Vector3f(b + kLampOutside_m, -kLampAbove_m, 0.0f)};
+  LampSet lamps;
+  for (int k = 0; k < 2; ++k) lamps.p_lamp_in_panel_m[k] = left.p_cam_in_panel_m + left.R_panel_cam * in_cam[k];
+  lamps.axis_in_panel = left.R_panel_cam.col(2);
+  return lamps;
+}
+
+std::uint64_t StereoRenderer::frameKey(const CameraTick& tick, int camera) const {
+  const std::uint32_t t_lo = static_cast<std::uint32_t>(tick.t_us), t_hi = static_cast<std::uint32_t>(tick.t_us >> 32);
+  const std::uint64_t a = hashU32(static_cast<std::uint32_t>(seed_), t_lo, static_cast<std::uint32_t>(camera));
+  const std::uint64_t b = hashU32(static_cast<std::uint32_t>(seed_ >> 32), t_hi, static_cast<std::uint32_t>(a));
+  return (a << 32) | b;
+}
+
+bool StereoRenderer::checkFrame(const StereoFrame& frame) const {
+  const int type = channels_ == 1 ? CV_8UC1 : CV_8UC3;
+  const cv::Size size(scenario_.camera.width_px, scenario_.camera.height_px);
+  return frame.left.type() == type && frame.right.type() == type && frame.left.size() == size &&
+         frame.right.size() == size && frame.left.isContinuous() && frame.right.isContinuous();
+}
+
+bool StereoRenderer::render(const CameraTick& tick, StereoFrame* frame, RenderTruth* truth) {
+  if (!initialised_ || frame == nullptr || !checkFrame(*frame)) return false;
+  const cv::Size size(scenario_.camera.width_px, scenario_.camera.height_px);
+  if (truth && (truth->depth_m.size() != size || truth->depth_m.type() != CV_32F || truth->disparity_px.size() != size ||
+                truth->disparity_px.type() != CV_32F || truth->right_depth_m.size() != size ||
+                truth->right_depth_m.type() != CV_32F))
+    return false;
+  scene_.setTime(static_cast<double>(tick.t_us) * 1e-6);
+  const ViewPose left = leftView(tick), right = rightView(tick);
+  const LampSet lamp_set = lamps(left);
+  float* depth_left = truth ? truth->depth_m.ptr<float>() : depth_scratch_.data();
+  view_.render(left, lamp_set, radiance_.data(), depth_left);
+  const float gain = sensor_.autoExposureGain(radiance_.data());
+  sensor_.expose(radiance_.data(), gain, frameKey(tick, 0), &frame->left);
+  float* depth_right = truth ? truth->right_depth_m.ptr<float>() : depth_scratch_.data();
+  view_.render(right, lamp_set, radiance_.data(), depth_right);
+  sensor_.expose(radiance_.data(), gain, frameKey(tick, 1), &frame->right);
+  frame->t_us = tick.t_us;
+  frame->sequence = tick.frame_index;
+  frame->rectified = true;
+  last_gain_ = gain;
+  if (truth) {
+    const float fb = static_cast<float>(scenario_.camera.fx_px * scenario_.camera.baseline_m);
+    const std::size_t n = static_cast<std::size_t>(size.area());
+    float* disparity = truth->disparity_px.ptr<float>();
+    for (std::size_t i = 0; i < n; ++i) disparity[i] = depth_left[i] > 0.0f ? fb / depth_left[i] : 0.0f;
+    visibleMarkers(left, &truth->visible_marker_ids);
+  }
+  return true;
+}
+
+void StereoRenderer::visibleMarkers(const ViewPose& left, std::vector<int>* ids) const {
+  ids->clear();
+  const CameraConfig& cam = scenario_.camera;
+  const Eigen::Matrix3d R_cam_panel = left.R_panel_cam.transpose().cast<double>();
+  const Eigen::Vector3d o = left.p_cam_in_panel_m.cast<double>();
+  for (const PanelMarker& m : panel_.markers) {
+    const Eigen::Matrix3d R_panel_marker = m.q_panel_marker.toRotationMatrix();
+    if (R_panel_marker.col(2).dot(o - m.p_marker_in_panel_m) <= 0.0) continue;  // seen from behind
+    bool visible = true;
+    for (int k = 0; k < 4 && visible; ++k) {
+      const Eigen::Vector3d corner = m.p_marker_in_panel_m + R_panel_marker * squareCorner(k, panel_.marker_size_m);
+      const Eigen::Vector3d p_cam = R_cam_panel * (corner - o);
+      if (p_cam.z() <= 0.0) {
+        visible = false;
+        break;
+      }
+      const double u = cam.fx_px * p_cam.x() / p_cam.z() + cam.cx_px, v = cam.fy_px * p_cam.y() / p_cam.z() + cam.cy_px;
+      if (u < 0.0 || v < 0.0 || u > cam.width_px - 1.0 || v > cam.height_px - 1.0) {
+        visible = false;
+        break;
+      }
+      const Eigen::Vector3d inset = corner + kMarkerCornerInset * (m.p_marker_in_panel_m - corner);
+      const Eigen::Vector3f d = (inset - o).cast<float>();
+      SceneHit hit;
+      const bool reached = scene_.intersect(o.cast<float>(), d, 1e-4f, 1.0f + 1e-3f, &hit) &&
+                           hit.primitive == Scene::faceRect(m.face) &&
+                           (1.0f - hit.t) * d.norm() < kCornerHitTolerance_m;
+      visible = reached;
+    }
+    if (visible) ids->push_back(m.id);
+  }
+  std::sort(ids->begin(), ids->end());
+}
+
+}  // namespace deepnav::sim

@@ -1,0 +1,75 @@
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "nav/markers/panel_description.h"
+#include "tools/sim/camera_tick.h"
+#include "tools/sim/render/camera_sensor.h"
+#include "tools/sim/render/marker_layout.h"
+#include "tools/sim/render/render_truth.h"
+#include "tools/sim/render/scene.h"
+#include "tools/sim/render/view_renderer.h"
+#include "tools/sim/render/water_optics.h"
+#include "tools/sim/scenario.h"
+#include "vision/types/stereo_frame.h"
+
+namespace deepnav::sim {
+
+// Renders the rectified stereo pair a CameraTick sees (panel, seabed, fish in the scenario's water),
+// and its ground truth. Deterministic: the same scenario, seed and tick give the same images.
+// Everything is allocated in init(); render() writes into the caller's preallocated frame
+// (allocateStereoFrame(frame, width, height, channels)) and truth (allocateTruth()).
+//
+//   StereoRenderer renderer;
+//   if (!renderer.init(scenario, seed, /*channels=*/1, &error)) die(error);
+//   renderer.allocateTruth(&truth);
+//   renderer.render(sim.cameraAt(t_us), &frame, &truth);
+class StereoRenderer {
+ public:
+  // channels: 1 (grey, CV_8UC1) or 3 (BGR, CV_8UC3), as the board's camera.channels.
+  bool init(const Scenario& scenario, std::uint64_t seed, int channels, std::string* error);
+  bool init(const Scenario& scenario, const MarkerLayout& layout, std::uint64_t seed, int channels,
+            std::string* error);
+  void allocateTruth(RenderTruth* truth) const;
+
+  // Draws the pair seen from the tick's camera poses (odometry frame) into *frame (t_us, sequence =
+  // frame_index, rectified = true) and, when truth is not null, fills it. False when the frame or the
+  // truth does not have the configured size and type.
+  bool render(const CameraTick& tick, StereoFrame* frame, RenderTruth* truth);
+
+  // The knowledge base of the rendered panel (same as makePanelDescription(scenario, layout)).
+  const PanelDescription& panel() const { return panel_; }
+  const Scene& scene() const { return scene_; }
+  const WaterOptics& optics() const { return optics_; }
+  // Camera poses of a tick in the panel frame.
+  ViewPose leftView(const CameraTick& tick) const;
+  ViewPose rightView(const CameraTick& tick) const;
+  // The lamps: two, 0.25 m outside each camera and 0.2 m above the optical centres, aimed forward.
+  LampSet lamps(const ViewPose& left) const;
+  // The auto-exposure gain of the last frame (camera_sensor.h).
+  float lastGain() const { return last_gain_; }
+  // Markers visible in the left camera (see RenderTruth), ascending ids, into *ids (cleared first).
+  void visibleMarkers(const ViewPose& left, std::vector<int>* ids) const;
+
+ private:
+  bool checkFrame(const StereoFrame& frame) const;
+  std::uint64_t frameKey(const CameraTick& tick, int camera) const;
+
+  Scenario scenario_;
+  PanelDescription panel_;
+  Scene scene_;
+  WaterOptics optics_;
+  ViewRenderer view_;
+  CameraSensor sensor_;
+  std::uint64_t seed_ = 0;
+  int channels_ = 1;
+  std::vector<float> radiance_;       // one view, then the next
+  std::vector<float> depth_scratch_;  // when the caller wants no truth
+  float last_gain_ = 1.0f;
+  bool initialised_ = false;
+};
+
+}  // namespace deepnav::sim

@@ -1,0 +1,166 @@
+#include "tools/sim/render/view_renderer.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace deepnav::sim {
+
+namespace {
+constexpr float kTMin = 1e-3f;
+}  // namespace
+
+bool ViewRenderer::init(const CameraConfig& camera, int channels, const WaterOptics& optics, const Scene* scene,
+                        std::string* error) {
+  if ((channels != 1 && channels != 3) || scene == nullptr || camera.width_px < 16 || camera.height_px < 16) {
+    if (error) *error = "renderer: channels must be 1 or 3 and the image at least 16 x 16";
+    return false;
+  }
+  camera_ = camera;
+  channels_ = channels;
+  scene_ = scene;
+  optics_ = optics;
+  // A lamp path plus the view path, both within range.
+  water_.init(optics, 2.5f * kMaxRange_m);
+  backscatter_ = Eigen::Vector3f(optics.backscatter[0], optics.backscatter[1], optics.backscatter[2]);
+  const std::size_t n = scene->primitives().size();
+  origin_local_.assign(n, Eigen::Vector3f::Zero());
+  near_m_.assign(n, 0.0f);
+  candidates_.reserve(n);
+  return true;
+}
+
+void ViewRenderer::render(const ViewPose& pose, const LampSet& lamps, float* radiance, float* depth_m) {
+  const auto& prims = scene_->primitives();
+  origin_ = pose.p_cam_in_panel_m;
+  for (std::size_t i = 0; i < prims.size(); ++i) {
+    origin_local_[i] = prims[i].R_local_panel * (origin_ - prims[i].p_local_in_panel_m);
+    near_m_[i] = std::max(0.0f, (prims[i].bound_centre_in_panel_m - origin_).norm() - prims[i].bound_radius_m);
+  }
+  const float fx = static_cast<float>(camera_.fx_px), fy = static_cast<float>(camera_.fy_px);
+  ray_du_ = pose.R_panel_cam.col(0) / fx;
+  ray_dv_ = pose.R_panel_cam.col(1) / fy;
+  ray_base_ = pose.R_panel_cam.col(2) - static_cast<float>(camera_.cx_px) * ray_du_ -
+              static_cast<float>(camera_.cy_px) * ray_dv_;
+  const int w = camera_.width_px, h = camera_.height_px;
+  for (int v0 = 0; v0 < h; v0 += kTile) {
+    for (int u0 = 0; u0 < w; u0 += kTile) {
+      const int u1 = std::min(u0 + kTile, w), v1 = std::min(v0 + kTile, h);
+      listCandidates(tileCone(u0, v0, u1, v1));
+      renderTile(u0, v0, u1, v1, lamps, radiance, depth_m);
+    }
+  }
+}
+
+ViewRenderer::Cone ViewRenderer::tileCone(int u0, int v0, int u1, int v1) const {
+  // Rays through the tile's outer pixel edges bound every ray of the tile (the tile is convex).
+  const float us[2] = {u0 - 0.5f, u1 - 0.5f}, vs[2] = {v0 - 0.5f, v1 - 0.5f};
+  Eigen::Vector3f corners[4];
+  Eigen::Vector3f sum = Eigen::Vector3f::Zero();
+  for (int k = 0; k < 4; ++k) {
+    corners[k] = (ray_base_ + us[k & 1] * ray_du_ + vs[k >> 1] * ray_dv_).normalized();
+    sum += corners[k];
+  }
+  Cone cone{sum.normalized(), 1.0f};
+  for (const auto& c : corners) cone.cos_half_angle = std::min(cone.cos_half_angle, cone.axis.dot(c));
+  return cone;
+}
+
+void ViewRenderer::listCandidates(const Cone& cone) {
+  const auto& prims = scene_->primitives();
+  const float sin_half = std::sqrt(std::max(0.0f, 1.0f - cone.cos_half_angle * cone.cos_half_angle));
+  candidates_.clear();
+  for (int i = 0; i < static_cast<int>(prims.size()); ++i) {
+    const Eigen::Vector3f to_centre = prims[i].bound_centre_in_panel_m - origin_;
+    const float dist = to_centre.norm(), r = prims[i].bound_radius_m;
+    // The sphere meets the cone iff angle(axis, centre) <= half angle + asin(r / dist); tile cones are
+    // narrow, so the sum stays below pi and the comparison can be made on cosines.
+    bool inside = dist <= r;
+    if (!inside) {
+      const float sin_r = r / dist, cos_r = std::sqrt(1.0f - sin_r * sin_r);
+      inside = cone.axis.dot(to_centre) / dist >= cone.cos_half_angle * cos_r - sin_half * sin_r;
+    }
+    if (!inside) continue;
+    // Insertion keeps the list nearest first.
+    candidates_.push_back(i);
+    for (int k = static_cast<int>(candidates_.size()) - 1; k > 0 && near_m_[candidates_[k - 1]] > near_m_[i]; --k)
+      std::swap(candidates_[k - 1], candidates_[k]);
+  }
+}
+
+void ViewRenderer::renderTile(int u0, int v0, int u1, int v1, const LampSet& lamps, float* radiance, float* depth_m) {
+  const auto& prims = scene_->primitives();
+  const float fx = static_cast<float>(camera_.fx_px), fy = static_cast<float>(camera_.fy_px);
+  const float cx = static_cast<float>(camera_.cx_px), cy = static_cast<float>(camera_.cy_px);
+  const int w = camera_.width_px, c = channels_;
+  const int count = static_cast<int>(candidates_.size());
+  SceneHit hit;
+  LocalHit local;
+  for (int v = v0; v < v1; ++v) {
+    const float yn = (v - cy) / fy;
+    for (int u = u0; u < u1; ++u) {
+      const float xn = (u - cx) / fx;
+      const float len2 = 1.0f + xn * xn + yn * yn;
+      const float inv_len = 1.0f / std::sqrt(len2);
+      const Eigen::Vector3f d = ray_base_ + static_cast<float>(u) * ray_du_ + static_cast<float>(v) * ray_dv_;
+      float t_best = kMaxRange_m * inv_len;
+      hit.primitive = -2;
+      for (int k = 0; k < count; ++k) {
+        const int i = candidates_[k];
+        if (near_m_[i] * inv_len >= t_best) break;
+        const Primitive& p = prims[i];
+        if (intersectPrimitive(origin_local_[i], p.R_local_panel * d, p, kTMin, t_best, &local)) {
+          t_best = local.t;
+          hit.primitive = i;
+          hit.local = local;
+        }
+      }
+      float t_seabed = 0.0f;
+      if (scene_->seabed().intersect(origin_, d, kTMin, t_best, &t_seabed)) {
+        t_best = t_seabed;
+        hit.primitive = Scene::kSeabed;
+      }
+      const std::size_t pixel = static_cast<std::size_t>(v) * w + u;
+      Eigen::Vector3f L = backscatter_;
+      if (hit.primitive != -2) {
+        hit.t = t_best;
+        L = shade(hit, d, std::sqrt(len2), lamps);
+        depth_m[pixel] = t_best;
+      } else {
+        depth_m[pixel] = 0.0f;
+      }
+      L *= 1.0f / (len2 * len2);  // cos^4 of the angle off the optical axis
+      float* out = radiance + pixel * c;
+      if (c == 3) {
+        out[0] = L[0], out[1] = L[1], out[2] = L[2];
+      } else {
+        out[0] = 0.114f * L[0] + 0.587f * L[1] + 0.299f * L[2];
+      }
+    }
+  }
+}
+
+Eigen::Vector3f ViewRenderer::shade(const SceneHit& hit, const Eigen::Vector3f& d, float ray_length,
+                                    const LampSet& lamps) const {
+  const float distance = hit.t * ray_length;
+  const Eigen::Vector3f p = origin_ + hit.t * d;
+  const Eigen::Vector3f n = scene_->normalAt(hit, origin_, d);
+  // A pixel's footprint at the hit, widened for oblique views (geometric mean of the two axes).
+  const float cos_view = std::abs(n.dot(d)) / ray_length;
+  const float footprint_m = hit.t / static_cast<float>(camera_.fx_px) / std::sqrt(std::max(cos_view, 0.1f));
+  const Eigen::Vector3f albedo = scene_->albedoAt(hit, origin_, d, footprint_m);
+  Eigen::Vector3f E = Eigen::Vector3f::Zero();
+  for (const Eigen::Vector3f& lamp : lamps.p_lamp_in_panel_m) {
+    const Eigen::Vector3f l = lamp - p;
+    const float dl2 = l.squaredNorm();
+    const float inv_dl = 1.0f / std::sqrt(dl2);
+    const float cos_surface = n.dot(l) * inv_dl;
+    const float cos_beam = -lamps.axis_in_panel.dot(l) * inv_dl;
+    if (cos_surface <= 0.0f || cos_beam <= 0.0f) continue;
+    const float irradiance = optics_.lamp_intensity * cos_surface * cos_beam / dl2;
+    E += irradiance * water_.transmittance(dl2 * inv_dl + distance);
+  }
+  const Eigen::Vector3f veil = Eigen::Vector3f::Ones() - water_.transmittance(distance);
+  return albedo.cwiseProduct(E) + backscatter_.cwiseProduct(veil);
+}
+
+}  // namespace deepnav::sim

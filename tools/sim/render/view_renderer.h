@@ -1,0 +1,70 @@
+#pragma once
+#include <array>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "tools/sim/render/scene.h"
+#include "tools/sim/render/water_optics.h"
+#include "tools/sim/render/water_path.h"
+#include "tools/sim/sensors/camera_rig.h"
+
+namespace deepnav::sim {
+
+// One camera's view of the scene for one frame, everything in the panel frame P.
+struct ViewPose {
+  Eigen::Matrix3f R_panel_cam = Eigen::Matrix3f::Identity();  // optical frame: z forward, x right, y down
+  Eigen::Vector3f p_cam_in_panel_m = Eigen::Vector3f::Zero();
+};
+
+// The vehicle's two lamps (they move with the rig, so both cameras see the same lighting).
+struct LampSet {
+  std::array<Eigen::Vector3f, 2> p_lamp_in_panel_m{Eigen::Vector3f::Zero(), Eigen::Vector3f::Zero()};
+  Eigen::Vector3f axis_in_panel = Eigen::Vector3f::UnitX();  // both aim along the optical axis
+};
+
+// Ray casts one pinhole camera: one ray per pixel centre, d = R_panel_cam (x_n, y_n, 1) with
+// x_n = (u - cx) / fx, y_n = (v - cy) / fy, so the ray parameter of a hit is its depth along the
+// optical axis. Per 16 x 16 tile, the primitives whose bounding sphere meets the tile's cone of rays are
+// listed nearest first, and a pixel stops testing once the next sphere is farther than its hit; the
+// seabed is marched only up to the nearest hit. Shading (README: image formation):
+//   E_c  = sum_lamps I cos(theta_s) cos(phi) / d_l^2 exp(-beta_c (d_l + d))   light reaching the camera
+//   L_c  = albedo_c E_c + B_inf_c (1 - exp(-beta_c d))                         plus backscatter
+//   out  = L_c / (1 + x_n^2 + y_n^2)^2                                        cos^4 vignetting
+// No hit within max range: L_c = B_inf_c. Grey: 0.114 B + 0.587 G + 0.299 R.
+class ViewRenderer {
+ public:
+  static constexpr float kMaxRange_m = 40.0f;  // beyond, lamps and water leave nothing visible
+  static constexpr int kTile = 16;
+
+  bool init(const CameraConfig& camera, int channels, const WaterOptics& optics, const Scene* scene,
+            std::string* error);
+  // radiance: width * height * channels floats; depth_m: width * height floats (0 = no hit).
+  void render(const ViewPose& pose, const LampSet& lamps, float* radiance, float* depth_m);
+
+ private:
+  struct Cone {
+    Eigen::Vector3f axis;
+    float cos_half_angle;
+  };
+  Cone tileCone(int u0, int v0, int u1, int v1) const;
+  void listCandidates(const Cone& cone);
+  void renderTile(int u0, int v0, int u1, int v1, const LampSet& lamps, float* radiance, float* depth_m);
+  Eigen::Vector3f shade(const SceneHit& hit, const Eigen::Vector3f& d, float ray_length, const LampSet& lamps) const;
+
+  CameraConfig camera_;
+  int channels_ = 1;
+  const Scene* scene_ = nullptr;
+  WaterOptics optics_;
+  WaterPath water_;
+  Eigen::Vector3f backscatter_ = Eigen::Vector3f::Zero();
+  // Per frame.
+  Eigen::Vector3f origin_ = Eigen::Vector3f::Zero();
+  Eigen::Vector3f ray_base_, ray_du_, ray_dv_;  // d(u, v) = base + u du + v dv
+  std::vector<Eigen::Vector3f> origin_local_;     // per primitive
+  std::vector<float> near_m_;                     // per primitive: distance to its bounding sphere
+  std::vector<int> candidates_;                   // per tile, nearest first
+};
+
+}  // namespace deepnav::sim

