@@ -18,6 +18,13 @@ struct PlaneExtractionConfig {
   // the plane n.p = d it shrinks by |n.p| / Z = |d| / Z).
   double max_point_distance_m = 0.005;
   double distance_sigmas = 2.5;
+  // Local normal test: the normal of the cell's neighbourhood, (p[c+k] - p[c-k]) x (p[r+k] -
+  // p[r-k]) with k cells ~ normal_span_m at the cell's depth (1..8), must be within
+  // max_normal_angle_deg of the region's normal. Without it a region leaks along the line where its
+  // (infinite) plane cuts another surface: those cells pass the distance test, and a box face grown
+  // first cuts the floor in two with a thin band. Skipped where a neighbour at +-k is missing.
+  double normal_span_m = 0.04;
+  double max_normal_angle_deg = 45.0;
   // Region test (Poppinga's epsilon): mean squared point-to-plane distance of the region with the
   // candidate added, beyond the mean noise variance sigma^2 of its points.
   double max_mse_m2 = 0.0001;  // (1 cm)^2

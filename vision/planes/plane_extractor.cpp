@@ -9,7 +9,9 @@ bool PlaneExtractor::init(const PlaneExtractionConfig& config, const StereoGeome
       config.disparity_noise_px <= 0.0 || config.point_noise_floor_m < 0.0) {
     return false;
   }
-  if (!grower_.init(config, geometry.focalBaseline(), rows, cols, step_px)) return false;
+  if (!grower_.init(config, geometry.fx_px, geometry.focalBaseline(), rows, cols, step_px)) {
+    return false;
+  }
   if (!tracer_.init(rows, cols)) return false;
   config_ = config;
   step_px_ = step_px;

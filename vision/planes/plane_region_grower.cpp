@@ -5,9 +5,10 @@
 
 namespace deepnav {
 
-bool PlaneRegionGrower::init(const PlaneExtractionConfig& config, double focal_baseline_pxm,
-                             int rows, int cols, int step_px) {
-  if (rows <= 0 || cols <= 0 || step_px <= 0 || focal_baseline_pxm <= 0.0 ||
+bool PlaneRegionGrower::init(const PlaneExtractionConfig& config, double fx_px,
+                             double focal_baseline_pxm, int rows, int cols, int step_px) {
+  if (rows <= 0 || cols <= 0 || step_px <= 0 || focal_baseline_pxm <= 0.0 || fx_px <= 0.0 ||
+      config.normal_span_m <= 0.0 || !(config.max_normal_angle_deg > 0.0) ||
       config.max_planes < 1 || config.max_planes > 250 || config.seed_window_cells < 3 ||
       config.seed_window_cells % 2 == 0 || config.seed_spacing_px < 1 ||
       config.refit_growth <= 1.0 || config.max_point_distance_m <= 0.0 ||
@@ -16,6 +17,9 @@ bool PlaneRegionGrower::init(const PlaneExtractionConfig& config, double focal_b
   }
   config_ = config;
   noise_per_z2_ = static_cast<float>(config.disparity_noise_px / focal_baseline_pxm);
+  normal_span_cells_m_ = static_cast<float>(config.normal_span_m * fx_px / step_px);
+  const double cos_normal = std::cos(std::min(90.0, config.max_normal_angle_deg) * M_PI / 180.0);
+  cos2_normal_ = static_cast<float>(cos_normal * cos_normal);
   rows_ = rows;
   cols_ = cols;
   const int step2 = step_px * step_px;
@@ -243,7 +247,26 @@ bool PlaneRegionGrower::growRegion(const OrganizedCloud& cloud, int seed_cell, s
   const double k_sigma = config_.distance_sigmas;
   const double max_mse = config_.max_mse_m2;
 
-  auto consider = [&](int cell) {
+  // Local normal of the cell at (r, c) against the region's normal; true when it agrees or
+  // cannot be computed.
+  auto localNormalAgrees = [&](int cell, int r, int c, const cv::Vec3f& p) {
+    const int k = std::clamp(static_cast<int>(normal_span_cells_m_ / p[2] + 0.5f), 1, 8);
+    if (r < k || c < k || r + k >= rows_ || c + k >= cols_) return true;
+    const cv::Vec3f& left = point(cell - k);
+    const cv::Vec3f& right = point(cell + k);
+    const cv::Vec3f& up = point(cell - k * cols_);
+    const cv::Vec3f& down = point(cell + k * cols_);
+    if (!OrganizedCloud::isValid(left) || !OrganizedCloud::isValid(right) ||
+        !OrganizedCloud::isValid(up) || !OrganizedCloud::isValid(down)) {
+      return true;
+    }
+    const cv::Vec3f local = (right - left).cross(down - up);
+    const float dot = static_cast<float>(n.x()) * local[0] + static_cast<float>(n.y()) * local[1] +
+                      static_cast<float>(n.z()) * local[2];
+    return dot * dot >= cos2_normal_ * local.dot(local);
+  };
+
+  auto consider = [&](int cell, int r, int c) {
     if (stamp_[cell] == attempt || labels[cell] != 0) return;
     stamp_[cell] = attempt;
     const cv::Vec3f& p = point(cell);
@@ -254,6 +277,8 @@ bool PlaneRegionGrower::growRegion(const OrganizedCloud& cloud, int seed_cell, s
     const float sigma = noise_per_z2_ * p[2] * abs_d;
     // (1) distance to the plane through the current centroid
     if (std::abs(a - sum_a / sums.n) > gamma + k_sigma * sigma) return;
+    // (1b) the surface around the cell faces the same way
+    if (!localNormalAgrees(cell, r, c, p)) return;
     // (2) MSE of the region with the candidate, beyond the mean noise variance
     const double n1 = sums.n + 1.0;
     const double s1 = sum_a + a;
@@ -273,10 +298,10 @@ bool PlaneRegionGrower::growRegion(const OrganizedCloud& cloud, int seed_cell, s
     const int cell = members_[head];
     const int r = cell / cols_;
     const int c = cell - r * cols_;
-    if (c > 0) consider(cell - 1);
-    if (c + 1 < cols_) consider(cell + 1);
-    if (r > 0) consider(cell - cols_);
-    if (r + 1 < rows_) consider(cell + cols_);
+    if (c > 0) consider(cell - 1, r, c - 1);
+    if (c + 1 < cols_) consider(cell + 1, r, c + 1);
+    if (r > 0) consider(cell - cols_, r - 1, c);
+    if (r + 1 < rows_) consider(cell + cols_, r + 1, c);
   }
   region->member_count = member_end_ - region->member_begin;
   if (region->member_count < min_cells_) return false;

@@ -35,9 +35,9 @@ struct PlaneRegion {
 // the label grid in one pass. All buffers are sized in init().
 class PlaneRegionGrower {
  public:
-  // focal_baseline_pxm = fx * B; rows, cols, step_px: the cloud grid.
-  bool init(const PlaneExtractionConfig& config, double focal_baseline_pxm, int rows, int cols,
-            int step_px);
+  // fx_px, focal_baseline_pxm = fx * B: the stereo rig; rows, cols, step_px: the cloud grid.
+  bool init(const PlaneExtractionConfig& config, double fx_px, double focal_baseline_pxm, int rows,
+            int cols, int step_px);
   // Grows the regions of *cloud; returns their number (-1 if the cloud does not match init()).
   int grow(const OrganizedCloud& cloud);
 
@@ -64,7 +64,9 @@ class PlaneRegionGrower {
   std::uint32_t nextAttempt();
 
   PlaneExtractionConfig config_;
-  float noise_per_z2_ = 0.0f;  // sigma_Z / Z^2 = sigma_d / (f B)
+  float noise_per_z2_ = 0.0f;         // sigma_Z / Z^2 = sigma_d / (f B)
+  float normal_span_cells_m_ = 1.0f;  // offset k of the local normal = this / Z (cells * m)
+  float cos2_normal_ = 0.0f;
   int rows_ = 0;
   int cols_ = 0;
   int min_cells_ = 0;

@@ -1,0 +1,31 @@
+#include "vision/planes/plane_translation.h"
+
+#include <Eigen/Eigenvalues>
+
+namespace deepnav {
+
+bool solvePlaneTranslation(const Eigen::Vector3d* n_a, const double* delta_d_m,
+                           const double* var_m2, int count, double min_eigenvalue,
+                           TranslationResult* result) {
+  if (result == nullptr || count < 1) return false;
+  Eigen::Matrix3d N = Eigen::Matrix3d::Zero();
+  Eigen::Matrix3d A = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d b = Eigen::Vector3d::Zero();
+  for (int i = 0; i < count; ++i) {
+    if (!(var_m2[i] > 0.0)) return false;
+    N += n_a[i] * n_a[i].transpose();
+    A += n_a[i] * n_a[i].transpose() / var_m2[i];
+    b += n_a[i] * delta_d_m[i] / var_m2[i];
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
+  eig.computeDirect(N / count, Eigen::EigenvaluesOnly);
+  result->min_eigenvalue = eig.eigenvalues()(0);
+  result->observable = count >= 3 && result->min_eigenvalue >= min_eigenvalue;
+  if (!result->observable) return true;
+  const Eigen::Matrix3d cov = A.inverse();
+  result->t_m = cov * b;
+  result->cov_m2 = 0.5 * (cov + cov.transpose());
+  return true;
+}
+
+}  // namespace deepnav
