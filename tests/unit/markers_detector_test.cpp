@@ -156,6 +156,25 @@ TEST(MarkersSquarePose, ExactCornersGiveTheExactPoseInTheArucoFrame) {
   }
 }
 
+TEST(MarkersSquarePose, UprightHeadOnMarkerIsARotationOfPiAndStillExact) {
+  // GIVEN the exact corners of upright markers facing the camera, turned about their vertical axis
+  // only: R_cam_marker = diag(1, -1, -1) * Ry(a) is a rotation by exactly pi for every a, where
+  // OpenCV 4.6's IPPE returns a wrong rotation (its rotation-vector conversion divides by sin(pi))
+  for (double a_deg : {0.0, 10.0, 25.0, -40.0}) {
+    const SyntheticMarker m = markerAt(1, Eigen::Vector3d(0.0, 0.0, 1.5), a_deg * kDeg);
+    ASSERT_NEAR(Eigen::AngleAxisd(m.q_cam_marker).angle(), std::numbers::pi, 1e-9);
+    std::array<Eigen::Vector2d, 4> corners;
+    for (int k = 0; k < 4; ++k) corners[k] = projectMarkerCorner(m, camera(), k);
+    // WHEN the pose is estimated
+    MarkerObservation obs;
+    ASSERT_TRUE(estimateSquareMarkerPose(corners, 0.15, camera(), MarkerAmbiguityConfig{}, &obs));
+    // THEN it is exact (solved again in a slightly rotated virtual camera)
+    EXPECT_LT((obs.p_marker_in_cam_m - m.p_marker_in_cam_m).norm(), 1e-9) << a_deg;
+    EXPECT_LT(angleDeg(obs.q_cam_marker, m.q_cam_marker), 1e-6) << a_deg;
+    EXPECT_LT(obs.reprojection_error_px, 1e-6) << a_deg;
+  }
+}
+
 TEST(MarkersSquarePose, ObliquenessIsTheAngleBetweenNormalAndRay) {
   // GIVEN a marker on the optical axis turned by a about its vertical axis THEN obliqueness = a
   for (double a_deg : {0.0, 15.0, 45.0, 80.0}) {
