@@ -1,5 +1,7 @@
 #include "vision/cloud/synthetic_scene.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -49,9 +51,8 @@ struct Hit {
   std::uint32_t seed = 0;
 };
 
-void intersect(const SyntheticRectangle& rect, int id, const Eigen::Vector3d& o,
-               const Eigen::Vector3d& dir, Hit* hit) {
-  const Eigen::Vector3d n = rect.normal();
+void intersect(const SyntheticRectangle& rect, const Eigen::Vector3d& n, int id,
+               const Eigen::Vector3d& o, const Eigen::Vector3d& dir, Hit* hit) {
   const double denom = n.dot(dir);
   if (std::abs(denom) < 1e-12) return;
   const double range = n.dot(rect.centre_m - o) / denom;
@@ -99,13 +100,19 @@ void renderSyntheticView(const SyntheticScene& scene, const StereoGeometry& geom
   const Eigen::Matrix3d R = T_world_cam.linear();
   const Eigen::Vector3d o = T_world_cam.translation();
   const int n_rect = static_cast<int>(scene.rectangles.size());
+  constexpr int kCached = 64;  // normals of the first rectangles, computed once per view
+  std::array<Eigen::Vector3d, kCached> normals;
+  for (int i = 0; i < std::min(n_rect, kCached); ++i) normals[i] = scene.rectangles[i].normal();
   for (int v = 0; v < height_px; ++v) {
     for (int u = 0; u < width_px; ++u) {
       const Eigen::Vector3d ray_cam((u - geometry.cx_px) / geometry.fx_px,
                                     (v - geometry.cy_px) / geometry.fy_px, 1.0);
       const Eigen::Vector3d dir = (R * ray_cam).normalized();
       Hit hit;
-      for (int i = 0; i < n_rect; ++i) intersect(scene.rectangles[i], i, o, dir, &hit);
+      for (int i = 0; i < n_rect; ++i) {
+        const SyntheticRectangle& rect = scene.rectangles[i];
+        intersect(rect, i < kCached ? normals[i] : rect.normal(), i, o, dir, &hit);
+      }
       for (int i = 0; i < static_cast<int>(scene.spheres.size()); ++i) {
         intersect(scene.spheres[i], n_rect + i, o, dir, &hit);
       }
