@@ -1,10 +1,10 @@
-// LocalBundleAdjuster: a window of stereo keyframes with perturbed poses and points comes back to the
-// truth; the fixed keyframe holds the gauge; gross observations are flagged.
+// LocalBundleAdjuster: a window of stereo keyframes with perturbed poses and points comes back to
+// the truth; the fixed keyframe holds the gauge; gross observations are flagged.
+#include <gtest/gtest.h>
+
 #include <cstdio>
 #include <random>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "nav/ekf/so3.h"
 #include "vision/orbvo/local_bundle_adjuster.h"
@@ -20,8 +20,9 @@ struct Problem {
   std::vector<BaObservation> observations;
 };
 
-// 5 keyframes 8 cm apart looking at 300 points at 1-3 m; each keyframe observes the points in its view
-// with 0.5 px noise; poses (except the first) and points start perturbed by about 1 cm and 0.5 deg.
+// 5 keyframes 8 cm apart looking at 300 points at 1-3 m; each keyframe observes the points in its
+// view with 0.5 px noise; poses (except the first) and points start perturbed by about 1 cm and 0.5
+// deg.
 Problem makeProblem(std::mt19937* rng) {
   const StereoRig rig;
   Problem p;
@@ -45,7 +46,8 @@ Problem makeProblem(std::mt19937* rng) {
     for (int c = 0; c < 5; ++c) {
       const Eigen::Vector3d p_in_cam = p.R_true[c] * point + p.t_true[c];
       const StereoProjection proj = projectStereo(rig, p_in_cam);
-      if (proj.uvr_px(0) < 0 || proj.uvr_px(0) > rig.width_px || proj.uvr_px(1) < 0 || proj.uvr_px(1) > rig.height_px) {
+      if (proj.uvr_px(0) < 0 || proj.uvr_px(0) > rig.width_px || proj.uvr_px(1) < 0 ||
+          proj.uvr_px(1) > rig.height_px) {
         continue;
       }
       BaObservation o;
@@ -64,7 +66,8 @@ TEST(OrbVoBundleAdjuster, RecoversPerturbedWindow) {
   std::mt19937 rng(5);
   Problem p = makeProblem(&rng);
   // A few gross observations (wrong associations).
-  for (std::size_t k = 7; k < p.observations.size(); k += 97) p.observations[k].uv_px += Eigen::Vector2d(25.0, -18.0);
+  for (std::size_t k = 7; k < p.observations.size(); k += 97)
+    p.observations[k].uv_px += Eigen::Vector2d(25.0, -18.0);
   LocalBundleAdjuster ba;
   ASSERT_TRUE(ba.init(5, 300, static_cast<int>(p.observations.size())));
   std::vector<std::uint8_t> outlier(p.observations.size(), 0);
@@ -74,9 +77,11 @@ TEST(OrbVoBundleAdjuster, RecoversPerturbedWindow) {
   BundleAdjusterConfig config;
   config.iterations = 10;
   ASSERT_TRUE(ba.optimise(StereoRig{}, config, 5, 1, p.R.data(), p.t.data(), 300, p.points.data(),
-                          static_cast<int>(p.observations.size()), p.observations.data(), outlier.data(), &summary));
+                          static_cast<int>(p.observations.size()), p.observations.data(),
+                          outlier.data(), &summary));
   EXPECT_LT(summary.final_cost, 0.05 * summary.initial_cost);
-  std::printf("cost %.1f -> %.1f in %d steps\n", summary.initial_cost, summary.final_cost, summary.accepted_steps);
+  std::printf("cost %.1f -> %.1f in %d steps\n", summary.initial_cost, summary.final_cost,
+              summary.accepted_steps);
   EXPECT_GT(summary.accepted_steps, 1);
   // The fixed keyframe did not move; the others came back from about 1.7 cm and 0.5 deg to within
   // 1.5 mm and 0.06 deg (the precision of 0.5 px observations of points at 1-3 m).
@@ -106,9 +111,12 @@ TEST(OrbVoBundleAdjuster, RejectsBadSizes) {
   BaObservation obs[1];
   std::uint8_t outlier[1];
   BundleAdjusterSummary summary;
-  EXPECT_FALSE(ba.optimise(StereoRig{}, BundleAdjusterConfig(), 4, 1, R, t, 1, points, 1, obs, outlier, &summary));
-  EXPECT_FALSE(ba.optimise(StereoRig{}, BundleAdjusterConfig(), 3, 0, R, t, 1, points, 1, obs, outlier, &summary));
-  EXPECT_FALSE(ba.optimise(StereoRig{}, BundleAdjusterConfig(), 3, 1, R, t, 11, points, 1, obs, outlier, &summary));
+  EXPECT_FALSE(ba.optimise(StereoRig{}, BundleAdjusterConfig(), 4, 1, R, t, 1, points, 1, obs,
+                           outlier, &summary));
+  EXPECT_FALSE(ba.optimise(StereoRig{}, BundleAdjusterConfig(), 3, 0, R, t, 1, points, 1, obs,
+                           outlier, &summary));
+  EXPECT_FALSE(ba.optimise(StereoRig{}, BundleAdjusterConfig(), 3, 1, R, t, 11, points, 1, obs,
+                           outlier, &summary));
 }
 
 }  // namespace

@@ -1,12 +1,12 @@
 // GridOrbExtractor and SteeredBrief: features spread over the grid, the per-cell adaptive FAST
 // threshold keeps low-contrast images usable, descriptors follow the corner's orientation.
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cstdio>
-#include <vector>
-
-#include <gtest/gtest.h>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
+#include <vector>
 
 #include "vision/orbvo/grid_orb_extractor.h"
 #include "vision/orbvo/synthetic_plane_scene.h"
@@ -20,7 +20,8 @@ constexpr int kHeightPx = 516;
 cv::Mat renderSceneImage(double contrast) {
   const SyntheticPlaneScene scene = makeOrbVoTestScene(11, contrast);
   cv::Mat left, right;
-  scene.render(StereoRig{}, Eigen::Quaterniond::Identity(), Eigen::Vector3d::Zero(), 90, &left, &right);
+  scene.render(StereoRig{}, Eigen::Quaterniond::Identity(), Eigen::Vector3d::Zero(), 90, &left,
+               &right);
   cv::Mat noise(left.size(), CV_16SC1), sum;
   cv::RNG(3).fill(noise, cv::RNG::NORMAL, 0.0, 1.5);
   left.convertTo(sum, CV_16SC1);
@@ -85,7 +86,8 @@ TEST(OrbVoExtractor, AdaptiveThresholdKeepsLowContrastImagesUsable) {
   // THEN the adaptive thresholds fill most budgets where a fixed threshold finds almost nothing
   EXPECT_GT(adaptive, adaptive_extractor.capacity() * 7 / 10);
   EXPECT_LT(fixed_count, fixed_extractor.capacity() / 5);
-  std::printf("low contrast: adaptive %d, fixed threshold 20: %d of %d\n", adaptive, fixed_count, fixed_extractor.capacity());
+  std::printf("low contrast: adaptive %d, fixed threshold 20: %d of %d\n", adaptive, fixed_count,
+              fixed_extractor.capacity());
 }
 
 TEST(OrbVoExtractor, DescriptorsTurnWithTheImage) {
@@ -135,9 +137,14 @@ TEST(OrbVoExtractor, RejectsBadConfigurationAndImages) {
   ASSERT_TRUE(extractor.init(OrbExtractorConfig(), kWidthPx, kHeightPx));
   std::vector<OrbFeature> features;
   std::vector<OrbDescriptor> descriptors;
-  EXPECT_EQ(extractor.extract(cv::Mat(10, 10, CV_8UC1, cv::Scalar(0)), &features, &descriptors), -1);
-  EXPECT_EQ(extractor.extract(cv::Mat(kHeightPx, kWidthPx, CV_8UC3, cv::Scalar(0)), &features, &descriptors), -1);
-  EXPECT_EQ(extractor.extract(cv::Mat(kHeightPx, kWidthPx, CV_8UC1, cv::Scalar(0)), &features, &descriptors), 0);
+  EXPECT_EQ(extractor.extract(cv::Mat(10, 10, CV_8UC1, cv::Scalar(0)), &features, &descriptors),
+            -1);
+  EXPECT_EQ(extractor.extract(cv::Mat(kHeightPx, kWidthPx, CV_8UC3, cv::Scalar(0)), &features,
+                              &descriptors),
+            -1);
+  EXPECT_EQ(extractor.extract(cv::Mat(kHeightPx, kWidthPx, CV_8UC1, cv::Scalar(0)), &features,
+                              &descriptors),
+            0);
 }
 
 }  // namespace

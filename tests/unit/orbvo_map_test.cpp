@@ -1,4 +1,5 @@
-// VoMap: keyframe ring with eviction of the oldest, map points freed when no keyframe refers to them.
+// VoMap: keyframe ring with eviction of the oldest, map points freed when no keyframe refers to
+// them.
 #include <gtest/gtest.h>
 
 #include "vision/orbvo/vo_map.h"

@@ -2,15 +2,15 @@
 // homographies into the DexROV rig (688x516, f = 700 px, baseline 0.30 m) along a known smooth
 // trajectory, with sensor noise. GIVEN the rendered sequence WHEN the odometry runs THEN each
 // relative pose, the chained trajectory, the covariance, the lost / relocalised states behave.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
-#include <vector>
-
-#include <Eigen/Geometry>
-#include <gtest/gtest.h>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
+#include <vector>
 
 #include "nav/ekf/so3.h"
 #include "vision/orbvo/orb_stereo_odometry.h"
@@ -33,12 +33,14 @@ struct CameraPose {
 CameraPose trajectoryPose(int k) {
   const double s = static_cast<double>(k);
   CameraPose pose;
-  pose.p_cam_in_world_m = {0.25 * std::sin(0.08 * s), 0.08 * std::sin(0.13 * s), 0.15 * (1.0 - std::cos(0.06 * s))};
+  pose.p_cam_in_world_m = {0.25 * std::sin(0.08 * s), 0.08 * std::sin(0.13 * s),
+                           0.15 * (1.0 - std::cos(0.06 * s))};
   const double yaw = 4.0 * kDeg * std::sin(0.07 * s);
   const double pitch = 3.0 * kDeg * (std::sin(0.05 * s + 0.5) - std::sin(0.5));
   const double roll = 2.0 * kDeg * std::sin(0.09 * s);
   // Camera frame: yaw about y (down), pitch about x (right), roll about z (forward).
-  pose.q_world_cam = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitY()) * Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitX()) *
+  pose.q_world_cam = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitY()) *
+                     Eigen::AngleAxisd(pitch, Eigen::Vector3d::UnitX()) *
                      Eigen::AngleAxisd(roll, Eigen::Vector3d::UnitZ());
   return pose;
 }
@@ -47,7 +49,8 @@ struct StereoImages {
   cv::Mat left, right;
 };
 
-StereoImages renderNoisy(const SyntheticPlaneScene& scene, const CameraPose& pose, std::uint64_t seed) {
+StereoImages renderNoisy(const SyntheticPlaneScene& scene, const CameraPose& pose,
+                         std::uint64_t seed) {
   StereoImages images;
   scene.render(rig(), pose.q_world_cam, pose.p_cam_in_world_m, 90, &images.left, &images.right);
   cv::RNG rng(seed);
@@ -75,7 +78,8 @@ struct FrameRecord {
   CameraPose truth_rel;
   double rotation_error_deg = 0.0;
   double translation_error_m = 0.0;
-  Eigen::Matrix<double, 6, 1> error = Eigen::Matrix<double, 6, 1>::Zero();  // [dp; n], the output's convention
+  // [dp; n], the output's convention
+  Eigen::Matrix<double, 6, 1> error = Eigen::Matrix<double, 6, 1>::Zero();
 };
 
 struct SequenceRun {
@@ -89,8 +93,8 @@ const SyntheticPlaneScene& texturedScene() {
 }
 
 // Relative pose errors of an output against the truth of frame b in frame a.
-void relativeErrors(const OrbVoOutput& out, const CameraPose& a, const CameraPose& b, double* translation_m,
-                    double* rotation_deg) {
+void relativeErrors(const OrbVoOutput& out, const CameraPose& a, const CameraPose& b,
+                    double* translation_m, double* rotation_deg) {
   const CameraPose truth = relativeTruth(a, b);
   *translation_m = (out.p_camb_in_cama_m - truth.p_cam_in_world_m).norm();
   *rotation_deg = truth.q_world_cam.angularDistance(out.q_cama_camb) / kDeg;
@@ -143,8 +147,10 @@ void checkEachRelativeMotion(const SequenceRun& run) {
     min_tracked = std::min(min_tracked, f.out.tracked_features);
   }
   const double n = static_cast<double>(run.frames.size() - 1);
-  std::printf("per frame: rotation mean %.4f max %.4f deg, translation mean %.2f max %.2f mm, min tracked %d\n",
-              sum_rot / n, max_rot, 1e3 * sum_trans / n, 1e3 * max_trans, min_tracked);
+  std::printf(
+      "per frame: rotation mean %.4f max %.4f deg, translation mean %.2f max %.2f mm, min tracked "
+      "%d\n",
+      sum_rot / n, max_rot, 1e3 * sum_trans / n, 1e3 * max_trans, min_tracked);
   EXPECT_LT(sum_rot / n, 0.1);
   EXPECT_LT(max_rot, 0.2);
   EXPECT_LT(sum_trans / n, 0.005);
@@ -155,11 +161,13 @@ void checkEachRelativeMotion(const SequenceRun& run) {
 void checkChainedTrajectory(const SequenceRun& run) {
   const CameraPose truth = relativeTruth(trajectoryPose(0), trajectoryPose(49));
   const double position_error_m = (run.chained.p_cam_in_world_m - truth.p_cam_in_world_m).norm();
-  const double rotation_error_deg = truth.q_world_cam.angularDistance(run.chained.q_world_cam) / kDeg;
+  const double rotation_error_deg =
+      truth.q_world_cam.angularDistance(run.chained.q_world_cam) / kDeg;
   double path_m = 0.0;
-  for (int k = 1; k < 50; ++k) path_m += (trajectoryPose(k).p_cam_in_world_m - trajectoryPose(k - 1).p_cam_in_world_m).norm();
-  std::printf("after 50 frames (%.2f m of path): position error %.1f mm, rotation error %.3f deg\n", path_m,
-              1e3 * position_error_m, rotation_error_deg);
+  for (int k = 1; k < 50; ++k)
+    path_m += (trajectoryPose(k).p_cam_in_world_m - trajectoryPose(k - 1).p_cam_in_world_m).norm();
+  std::printf("after 50 frames (%.2f m of path): position error %.1f mm, rotation error %.3f deg\n",
+              path_m, 1e3 * position_error_m, rotation_error_deg);
   EXPECT_LT(position_error_m, 0.03);
   EXPECT_LT(rotation_error_deg, 0.5);
   // The odometry's own world pose is the same chain.
@@ -178,8 +186,11 @@ void checkCovarianceAgainstTheError(const SequenceRun& run) {
   const double n = static_cast<double>(run.frames.size() - 1);
   const double nees = nees_sum / n;
   Eigen::Matrix<double, 6, 1> sigma_ratio = (ratio_sum / n).array().sqrt();
-  std::printf("mean NEES %.2f (6 if consistent); rms error / sigma per axis: %.2f %.2f %.2f %.2f %.2f %.2f\n", nees,
-              sigma_ratio(0), sigma_ratio(1), sigma_ratio(2), sigma_ratio(3), sigma_ratio(4), sigma_ratio(5));
+  std::printf(
+      "mean NEES %.2f (6 if consistent); rms error / sigma per axis: %.2f %.2f %.2f %.2f %.2f "
+      "%.2f\n",
+      nees, sigma_ratio(0), sigma_ratio(1), sigma_ratio(2), sigma_ratio(3), sigma_ratio(4),
+      sigma_ratio(5));
   EXPECT_GT(nees, 0.6);
   EXPECT_LT(nees, 60.0);
   for (int i = 0; i < 6; ++i) {
@@ -227,8 +238,9 @@ TEST(OrbVoOdometry, LowTextureImageGivesFewTrackedFeatures) {
     const StereoImages images = renderNoisy(bland, trajectoryPose(k), 300 + k);
     vo.process(k * kFramePeriodUs, images.left, images.right, &out);
     // THEN few features are tracked and the frame is reported lost, without a relative pose
-    std::printf("bland frame %d: %d features, %d stereo, %d tracked (textured: %d), %s\n", k, out.left_features,
-                out.stereo_points, out.tracked_features, textured_tracked, toString(out.status));
+    std::printf("bland frame %d: %d features, %d stereo, %d tracked (textured: %d), %s\n", k,
+                out.left_features, out.stereo_points, out.tracked_features, textured_tracked,
+                toString(out.status));
     EXPECT_LT(out.tracked_features, 20);
     EXPECT_EQ(out.status, OrbVoStatus::kLost);
     EXPECT_FALSE(out.hasRelativePose());
@@ -266,7 +278,8 @@ TEST(OrbVoOdometry, RelocalisesAfterBlankFramesNearAKeyframe) {
   // AND the vehicle comes back near where it was at frame 12, by then long behind it
   CameraPose back = trajectoryPose(12);
   back.p_cam_in_world_m += Eigen::Vector3d(0.02, -0.01, 0.015);
-  back.q_world_cam = back.q_world_cam * Eigen::Quaterniond(Eigen::AngleAxisd(1.0 * kDeg, Eigen::Vector3d::UnitY()));
+  back.q_world_cam = back.q_world_cam *
+                     Eigen::Quaterniond(Eigen::AngleAxisd(1.0 * kDeg, Eigen::Vector3d::UnitY()));
   {
     const StereoImages images = renderNoisy(texturedScene(), back, 600);
     vo.process(29 * kFramePeriodUs, images.left, images.right, &out);
@@ -277,8 +290,8 @@ TEST(OrbVoOdometry, RelocalisesAfterBlankFramesNearAKeyframe) {
   double translation_m = 0.0;
   double rotation_deg = 0.0;
   relativeErrors(out, trajectoryPose(24), back, &translation_m, &rotation_deg);
-  std::printf("relocalised: %d tracked, error %.2f mm, %.4f deg over %.3f m\n", out.tracked_features,
-              1e3 * translation_m, rotation_deg,
+  std::printf("relocalised: %d tracked, error %.2f mm, %.4f deg over %.3f m\n",
+              out.tracked_features, 1e3 * translation_m, rotation_deg,
               (trajectoryPose(24).p_cam_in_world_m - back.p_cam_in_world_m).norm());
   EXPECT_LT(translation_m, 0.01);
   EXPECT_LT(rotation_deg, 0.2);
@@ -288,7 +301,8 @@ TEST(OrbVoOdometry, RelocalisesAfterBlankFramesNearAKeyframe) {
   for (int k = 30; k < 33; ++k) {
     CameraPose pose = trajectoryPose(12 + (k - 29));
     pose.p_cam_in_world_m += Eigen::Vector3d(0.02, -0.01, 0.015);
-    pose.q_world_cam = pose.q_world_cam * Eigen::Quaterniond(Eigen::AngleAxisd(1.0 * kDeg, Eigen::Vector3d::UnitY()));
+    pose.q_world_cam = pose.q_world_cam *
+                       Eigen::Quaterniond(Eigen::AngleAxisd(1.0 * kDeg, Eigen::Vector3d::UnitY()));
     const StereoImages images = renderNoisy(texturedScene(), pose, 600 + k);
     vo.process(k * kFramePeriodUs, images.left, images.right, &out);
     ASSERT_EQ(out.status, OrbVoStatus::kOk) << "frame " << k;

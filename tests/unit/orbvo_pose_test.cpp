@@ -1,12 +1,12 @@
 // Camera pose from 2D-3D stereo correspondences: the residual's analytic Jacobian against numeric
 // differentiation, PnP RANSAC and the Huber Gauss-Newton refinement under outliers, the covariance
 // against Monte Carlo, and the relative pose covariance propagation.
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
 #include <cmath>
 #include <random>
 #include <vector>
-
-#include <Eigen/Geometry>
-#include <gtest/gtest.h>
 
 #include "nav/ekf/so3.h"
 #include "vision/orbvo/pnp_ransac.h"
@@ -38,14 +38,17 @@ CameraPoseEstimate perturbed(const CameraPoseEstimate& pose, const Vector6d& xi)
 
 // Points at 1-3 m spread over the view, observed with N(0, sigma^2) pixel noise; every third has no
 // right observation.
-std::vector<PoseObservation> observe(const CameraPoseEstimate& pose, int n, double sigma_px, std::mt19937* rng) {
+std::vector<PoseObservation> observe(const CameraPoseEstimate& pose, int n, double sigma_px,
+                                     std::mt19937* rng) {
   const StereoRig rig;
-  std::uniform_real_distribution<double> u(30.0, rig.width_px - 30.0), v(30.0, rig.height_px - 30.0), z(1.0, 3.0);
+  std::uniform_real_distribution<double> u(30.0, rig.width_px - 30.0),
+      v(30.0, rig.height_px - 30.0), z(1.0, 3.0);
   std::normal_distribution<double> noise(0.0, sigma_px);
   std::vector<PoseObservation> out;
   for (int i = 0; i < n; ++i) {
-    const Eigen::Vector3d p_in_cam = z(*rng) * Eigen::Vector3d((u(*rng) - rig.cx_px) / rig.fx_px,
-                                                               (v(*rng) - rig.cy_px) / rig.fy_px, 1.0);
+    const Eigen::Vector3d p_in_cam =
+        z(*rng) *
+        Eigen::Vector3d((u(*rng) - rig.cx_px) / rig.fx_px, (v(*rng) - rig.cy_px) / rig.fy_px, 1.0);
     PoseObservation o;
     o.p_in_world_m = pose.R_cam_world.transpose() * (p_in_cam - pose.p_world_in_cam_m);
     const StereoProjection proj = projectStereo(rig, p_in_cam);
@@ -77,7 +80,8 @@ TEST(OrbVoPose, ResidualJacobianMatchesNumericDifferentiation) {
       poseResidual(rig, o, plus.R_cam_world, plus.p_world_in_cam_m, &rp, &unused);
       poseResidual(rig, o, minus.R_cam_world, minus.p_world_in_cam_m, &rm, &unused);
       const Eigen::Vector3d numeric = (rp - rm) / (2.0 * kStep);
-      EXPECT_LT((numeric - J.col(k)).norm(), 1e-4 * std::max(1.0, numeric.norm())) << "column " << k;
+      EXPECT_LT((numeric - J.col(k)).norm(), 1e-4 * std::max(1.0, numeric.norm()))
+          << "column " << k;
     }
   }
 }
@@ -97,7 +101,8 @@ TEST(OrbVoPose, RansacAndHuberRefinementRejectOutliers) {
   std::vector<std::uint8_t> inlier(obs.size(), 0);
   ASSERT_TRUE(pnp.solve(rig, PnpRansacConfig(), &pose, inlier.data()));
   EXPECT_LT((pose.p_world_in_cam_m - truth.p_world_in_cam_m).norm(), 0.02);
-  ASSERT_TRUE(refineCameraPose(rig, PoseRefinerConfig(), obs.data(), static_cast<int>(obs.size()), inlier.data(), &pose));
+  ASSERT_TRUE(refineCameraPose(rig, PoseRefinerConfig(), obs.data(), static_cast<int>(obs.size()),
+                               inlier.data(), &pose));
   int false_inliers = 0;
   int missed_inliers = 0;
   for (std::size_t i = 0; i < obs.size(); ++i) {
@@ -133,7 +138,8 @@ TEST(OrbVoPose, CovarianceAgreesWithMonteCarlo) {
     }
     CameraPoseEstimate pose = perturbed(truth, Vector6d::Constant(0.01));
     std::vector<std::uint8_t> inlier(obs.size());
-    ASSERT_TRUE(refineCameraPose(rig, PoseRefinerConfig(), obs.data(), static_cast<int>(obs.size()), inlier.data(), &pose));
+    ASSERT_TRUE(refineCameraPose(rig, PoseRefinerConfig(), obs.data(), static_cast<int>(obs.size()),
+                                 inlier.data(), &pose));
     // Error as a left perturbation of the truth: pose = Exp(xi) truth.
     Vector6d xi;
     const Eigen::Matrix3d dR = pose.R_cam_world * truth.R_cam_world.transpose();
@@ -155,7 +161,8 @@ TEST(OrbVoPose, CovarianceAgreesWithMonteCarlo) {
 TEST(OrbVoPose, RelativePoseCovarianceFollowsBothPoses) {
   // GIVEN two camera poses with arbitrary covariances
   CameraPoseEstimate a = truePose();
-  CameraPoseEstimate b = perturbed(a, (Vector6d() << 0.05, -0.02, 0.1, 0.01, 0.03, -0.02).finished());
+  CameraPoseEstimate b =
+      perturbed(a, (Vector6d() << 0.05, -0.02, 0.1, 0.01, 0.03, -0.02).finished());
   std::mt19937 rng(4);
   std::normal_distribution<double> n01(0.0, 1.0);
   Matrix6d La = Matrix6d::Zero(), Lb = Matrix6d::Zero();
@@ -180,11 +187,13 @@ TEST(OrbVoPose, RelativePoseCovarianceFollowsBothPoses) {
       za(i) = n01(rng);
       zb(i) = n01(rng);
     }
-    const RelativeCameraPose sample = relativeCameraPose(perturbed(a, La * za), perturbed(b, Lb * zb));
+    const RelativeCameraPose sample =
+        relativeCameraPose(perturbed(a, La * za), perturbed(b, Lb * zb));
     Vector6d e;
     e.head<3>() = sample.p_camb_in_cama_m - rel.p_camb_in_cama_m;
     // RelativePoseMeasurement convention: R_meas = R_true Exp(n).
-    e.tail<3>() = logSo3(rel.q_cama_camb.toRotationMatrix().transpose() * sample.q_cama_camb.toRotationMatrix());
+    e.tail<3>() = logSo3(rel.q_cama_camb.toRotationMatrix().transpose() *
+                         sample.q_cama_camb.toRotationMatrix());
     scatter += e * e.transpose() / kSamples;
   }
   // THEN the propagated covariance matches the sampled one

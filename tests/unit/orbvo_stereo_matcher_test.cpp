@@ -1,13 +1,13 @@
 // StereoFeatureMatcher: row-band ORB matching with subpixel ZSAD refinement on rectified pairs of
 // known disparity.
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <vector>
-
-#include <gtest/gtest.h>
 #include <opencv2/core.hpp>
 #include <opencv2/imgproc.hpp>
+#include <vector>
 
 #include "vision/orbvo/grid_orb_extractor.h"
 #include "vision/orbvo/stereo_feature_matcher.h"
@@ -29,10 +29,12 @@ Pair wallPair(double depth_m, double extra_right_shift_v_px = 0.0) {
   wall.p_origin_in_world_m = {-0.75 * depth_m, -0.6 * depth_m, depth_m};
   scene.addPlane(wall);
   Pair pair;
-  scene.render(StereoRig{}, Eigen::Quaterniond::Identity(), Eigen::Vector3d::Zero(), 90, &pair.left, &pair.right);
+  scene.render(StereoRig{}, Eigen::Quaterniond::Identity(), Eigen::Vector3d::Zero(), 90, &pair.left,
+               &pair.right);
   if (extra_right_shift_v_px != 0.0) {
     const cv::Matx23d shift(1.0, 0.0, 0.0, 0.0, 1.0, extra_right_shift_v_px);
-    cv::warpAffine(pair.right, pair.right, shift, pair.right.size(), cv::INTER_LINEAR, cv::BORDER_REPLICATE);
+    cv::warpAffine(pair.right, pair.right, shift, pair.right.size(), cv::INTER_LINEAR,
+                   cv::BORDER_REPLICATE);
   }
   return pair;
 }
@@ -57,7 +59,8 @@ Matched matchPair(const Pair& pair) {
   right_extractor.extract(pair.right, &right, &right_desc);
   StereoFeatureMatcher matcher;
   EXPECT_TRUE(matcher.init(StereoMatchConfig(), StereoRig{}, right_extractor.capacity(), 1.2));
-  m.matches = matcher.match(pair.left, pair.right, m.left, left_desc, right, right_desc, &m.u_right_px, &m.p_in_cam_m);
+  m.matches = matcher.match(pair.left, pair.right, m.left, left_desc, right, right_desc,
+                            &m.u_right_px, &m.p_in_cam_m);
   return m;
 }
 
@@ -80,8 +83,8 @@ TEST(OrbVoStereoMatcher, RecoversTheDisparityOfAWallToSubpixel) {
     EXPECT_NEAR(m.p_in_cam_m[i].z(), 2.0, 0.03);
   }
   const double rms_px = std::sqrt(sum_sq / std::max(1, m.matches - gross));
-  std::printf("wall at 2 m: %d matches of %d visible features, disparity rms %.3f px, %d gross\n", m.matches, visible,
-              rms_px, gross);
+  std::printf("wall at 2 m: %d matches of %d visible features, disparity rms %.3f px, %d gross\n",
+              m.matches, visible, rms_px, gross);
   EXPECT_GT(m.matches, visible / 2);
   EXPECT_LT(rms_px, 0.15);
   EXPECT_LE(gross, m.matches / 100);
@@ -92,7 +95,8 @@ TEST(OrbVoStereoMatcher, RowsOutOfTheBandAreNotMatched) {
   const Matched m = matchPair(wallPair(2.0, 6.0));
   // THEN almost nothing passes the +-2 px band (coarse levels have a wider band)
   int level0 = 0;
-  for (std::size_t i = 0; i < m.left.size(); ++i) level0 += m.left[i].level == 0 && m.u_right_px[i] >= 0.0f;
+  for (std::size_t i = 0; i < m.left.size(); ++i)
+    level0 += m.left[i].level == 0 && m.u_right_px[i] >= 0.0f;
   EXPECT_LT(level0, 5);
 }
 

@@ -1,12 +1,12 @@
 // ORB stereo visual odometry at the DexROV camera size (688x516), one core (OpenCV threading off).
-// Target: <= 30 ms per stereo pair (the paper's ORB odometry: 145 ms). The sequence is the unit tests'
-// textured plane scene along a smooth trajectory, played back and forth so the odometry keeps tracking
-// (keyframe insertions and their bundle adjustments are part of the average).
-#include <cmath>
-#include <vector>
-
+// Target: <= 30 ms per stereo pair (the paper's ORB odometry: 145 ms). The sequence is the unit
+// tests' textured plane scene along a smooth trajectory, played back and forth so the odometry
+// keeps tracking (keyframe insertions and their bundle adjustments are part of the average).
 #include <benchmark/benchmark.h>
+
+#include <cmath>
 #include <opencv2/core.hpp>
+#include <vector>
 
 #include "vision/orbvo/grid_orb_extractor.h"
 #include "vision/orbvo/orb_stereo_odometry.h"
@@ -25,11 +25,13 @@ struct Pair {
 Pair renderFrame(const deepnav::SyntheticPlaneScene& scene, int k) {
   const double s = k;
   const double deg = 3.14159265358979 / 180.0;
-  const Eigen::Vector3d p(0.25 * std::sin(0.08 * s), 0.08 * std::sin(0.13 * s), 0.15 * (1.0 - std::cos(0.06 * s)));
-  const Eigen::Quaterniond q = Eigen::AngleAxisd(4.0 * deg * std::sin(0.07 * s), Eigen::Vector3d::UnitY()) *
-                               Eigen::AngleAxisd(3.0 * deg * (std::sin(0.05 * s + 0.5) - std::sin(0.5)),
-                                                 Eigen::Vector3d::UnitX()) *
-                               Eigen::AngleAxisd(2.0 * deg * std::sin(0.09 * s), Eigen::Vector3d::UnitZ());
+  const Eigen::Vector3d p(0.25 * std::sin(0.08 * s), 0.08 * std::sin(0.13 * s),
+                          0.15 * (1.0 - std::cos(0.06 * s)));
+  const Eigen::Quaterniond q =
+      Eigen::AngleAxisd(4.0 * deg * std::sin(0.07 * s), Eigen::Vector3d::UnitY()) *
+      Eigen::AngleAxisd(3.0 * deg * (std::sin(0.05 * s + 0.5) - std::sin(0.5)),
+                        Eigen::Vector3d::UnitX()) *
+      Eigen::AngleAxisd(2.0 * deg * std::sin(0.09 * s), Eigen::Vector3d::UnitZ());
   Pair pair;
   scene.render(deepnav::StereoRig{}, q, p, 90, &pair.left, &pair.right);
   cv::RNG rng(100 + k);
@@ -56,7 +58,8 @@ const std::vector<Pair>& sequence() {
 void BM_OrbVoFrame(benchmark::State& state) {
   deepnav::OrbStereoOdometry vo;
   std::string error;
-  if (!vo.init(deepnav::OrbVoConfig(), deepnav::StereoRig{}, &error)) state.SkipWithError(error.c_str());
+  if (!vo.init(deepnav::OrbVoConfig(), deepnav::StereoRig{}, &error))
+    state.SkipWithError(error.c_str());
   const std::vector<Pair>& frames = sequence();
   int k = 0;
   int step = 1;
@@ -76,7 +79,8 @@ void BM_OrbVoFrame(benchmark::State& state) {
     k += step;
   }
   state.counters["tracked"] = benchmark::Counter(tracked, benchmark::Counter::kAvgIterations);
-  state.counters["keyframe_rate"] = benchmark::Counter(keyframes, benchmark::Counter::kAvgIterations);
+  state.counters["keyframe_rate"] =
+      benchmark::Counter(keyframes, benchmark::Counter::kAvgIterations);
   state.counters["lost_rate"] = benchmark::Counter(lost, benchmark::Counter::kAvgIterations);
 }
 
@@ -95,7 +99,8 @@ void BM_StereoMatch(benchmark::State& state) {
   deepnav::GridOrbExtractor extractor;
   if (!extractor.init(deepnav::OrbExtractorConfig(), 688, 516)) state.SkipWithError("init");
   deepnav::StereoFeatureMatcher matcher;
-  if (!matcher.init(deepnav::StereoMatchConfig(), deepnav::StereoRig{}, extractor.capacity(), 1.2)) {
+  if (!matcher.init(deepnav::StereoMatchConfig(), deepnav::StereoRig{}, extractor.capacity(),
+                    1.2)) {
     state.SkipWithError("init");
   }
   std::vector<deepnav::OrbFeature> left, right;
@@ -106,8 +111,8 @@ void BM_StereoMatch(benchmark::State& state) {
   std::vector<Eigen::Vector3d> p_in_cam_m;
   int matches = 0;
   for (auto _ : state) {
-    matches = matcher.match(sequence()[0].left, sequence()[0].right, left, left_desc, right, right_desc, &u_right_px,
-                            &p_in_cam_m);
+    matches = matcher.match(sequence()[0].left, sequence()[0].right, left, left_desc, right,
+                            right_desc, &u_right_px, &p_in_cam_m);
     benchmark::DoNotOptimize(matches);
   }
   state.counters["matches"] = matches;

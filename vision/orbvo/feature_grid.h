@@ -7,8 +7,8 @@
 
 namespace deepnav {
 
-// Spatial index of one image's features on square cells, for searches in a window around a predicted
-// pixel. A counting sort per build(); sized in init(), does not allocate afterwards.
+// Spatial index of one image's features on square cells, for searches in a window around a
+// predicted pixel. A counting sort per build(); sized in init(), does not allocate afterwards.
 class FeatureGrid {
  public:
   bool init(int width_px, int height_px, int cell_px, int max_features) {
@@ -31,7 +31,8 @@ class FeatureGrid {
     cell_start_[0] = 0;
   }
 
-  // Calls visit(index) for every feature in the cells overlapping the square of half side radius_px.
+  // Calls visit(index) for every feature in the cells overlapping the square of half side
+  // radius_px.
   template <class Visit>
   void forEachNear(double u_px, double v_px, double radius_px, Visit&& visit) const {
     const int c0 = std::max(0, static_cast<int>(std::floor((u_px - radius_px) / cell_px_)));

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-
 #include <opencv2/features2d.hpp>
 #include <opencv2/imgproc.hpp>
 
@@ -13,9 +12,10 @@ constexpr int kFastRadiusPx = 3;  // FAST-9 samples a circle of radius 3
 
 bool validConfig(const OrbExtractorConfig& c) {
   return c.grid_cols >= 1 && c.grid_cols <= 64 && c.grid_rows >= 1 && c.grid_rows <= 64 &&
-         c.max_features_per_cell >= 1 && c.n_levels >= 1 && c.n_levels <= 8 && c.scale_factor > 1.0 &&
-         c.scale_factor <= 2.0 && c.fast_threshold_max >= 1 && c.fast_threshold_max <= 255 &&
-         c.fast_threshold_min >= 1 && c.fast_threshold_min <= c.fast_threshold_max && c.fast_contrast_gain > 0.0 &&
+         c.max_features_per_cell >= 1 && c.n_levels >= 1 && c.n_levels <= 8 &&
+         c.scale_factor > 1.0 && c.scale_factor <= 2.0 && c.fast_threshold_max >= 1 &&
+         c.fast_threshold_max <= 255 && c.fast_threshold_min >= 1 &&
+         c.fast_threshold_min <= c.fast_threshold_max && c.fast_contrast_gain > 0.0 &&
          c.smoothing_sigma_px > 0.0;
 }
 
@@ -40,11 +40,12 @@ bool GridOrbExtractor::init(const OrbExtractorConfig& config, int width_px, int 
     if (w < min_side || h < min_side) return false;
     if (l > 0) levels_[l].create(h, w, CV_8UC1);
     smoothed_[l].create(h, w, CV_8UC1);
-    cell_budget_[l] =
-        std::max(1, static_cast<int>(std::lround(config.max_features_per_cell / (scales_[l] * scales_[l]))));
+    cell_budget_[l] = std::max(
+        1, static_cast<int>(std::lround(config.max_features_per_cell / (scales_[l] * scales_[l]))));
     capacity_ += cell_budget_[l] * config.grid_cols * config.grid_rows;
   }
-  cell_threshold_.assign(static_cast<std::size_t>(config.n_levels) * config.grid_cols * config.grid_rows, 0);
+  cell_threshold_.assign(
+      static_cast<std::size_t>(config.n_levels) * config.grid_cols * config.grid_rows, 0);
   fast_corners_.reserve(static_cast<std::size_t>(width_px) * height_px / 16 + 64);
   cell_corners_.reserve(fast_corners_.capacity());
   return true;
@@ -99,7 +100,8 @@ void GridOrbExtractor::extractLevel(int level, std::vector<OrbFeature>* features
 }
 
 // Leaves in cell_corners_ the `budget` strongest corners inside `cell` (level coordinates).
-void GridOrbExtractor::detectCell(const cv::Mat& image, const cv::Rect& cell, int budget, int* cell_threshold) {
+void GridOrbExtractor::detectCell(const cv::Mat& image, const cv::Rect& cell, int budget,
+                                  int* cell_threshold) {
   cell_corners_.clear();
   // FAST cannot fire within 3 px of its image's edge: widen the ROI so the whole cell is searched.
   const cv::Rect roi(cell.x - kFastRadiusPx, cell.y - kFastRadiusPx, cell.width + 2 * kFastRadiusPx,
@@ -107,9 +109,11 @@ void GridOrbExtractor::detectCell(const cv::Mat& image, const cv::Rect& cell, in
   if (*cell_threshold == 0) {
     cv::Scalar mean, stddev;
     cv::meanStdDev(image(cell), mean, stddev);
-    *cell_threshold = std::max(1, static_cast<int>(std::lround(config_.fast_contrast_gain * stddev[0])));
+    *cell_threshold =
+        std::max(1, static_cast<int>(std::lround(config_.fast_contrast_gain * stddev[0])));
   }
-  int threshold = std::clamp(*cell_threshold, config_.fast_threshold_min, config_.fast_threshold_max);
+  int threshold =
+      std::clamp(*cell_threshold, config_.fast_threshold_min, config_.fast_threshold_max);
   bool first_pass = true;
   for (;;) {
     cv::FAST(image(roi), fast_corners_, threshold, true, cv::FastFeatureDetector::TYPE_9_16);
@@ -124,16 +128,21 @@ void GridOrbExtractor::detectCell(const cv::Mat& image, const cv::Rect& cell, in
     if (first_pass) {
       const int found = static_cast<int>(cell_corners_.size());
       const int step = std::max(1, threshold / 8);
-      if (found > 4 * budget) *cell_threshold = std::min(threshold + step, config_.fast_threshold_max);
-      if (found < 2 * budget) *cell_threshold = std::max(threshold - step, config_.fast_threshold_min);
+      if (found > 4 * budget)
+        *cell_threshold = std::min(threshold + step, config_.fast_threshold_max);
+      if (found < 2 * budget)
+        *cell_threshold = std::max(threshold - step, config_.fast_threshold_min);
       first_pass = false;
     }
-    if (2 * static_cast<int>(cell_corners_.size()) >= budget || threshold <= config_.fast_threshold_min) break;
+    if (2 * static_cast<int>(cell_corners_.size()) >= budget ||
+        threshold <= config_.fast_threshold_min)
+      break;
     threshold = config_.fast_threshold_min;
   }
   if (static_cast<int>(cell_corners_.size()) > budget) {
-    std::nth_element(cell_corners_.begin(), cell_corners_.begin() + budget, cell_corners_.end(),
-                     [](const cv::KeyPoint& a, const cv::KeyPoint& b) { return a.response > b.response; });
+    std::nth_element(
+        cell_corners_.begin(), cell_corners_.begin() + budget, cell_corners_.end(),
+        [](const cv::KeyPoint& a, const cv::KeyPoint& b) { return a.response > b.response; });
     cell_corners_.resize(budget);
   }
 }

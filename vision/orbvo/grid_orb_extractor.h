@@ -1,7 +1,6 @@
 #pragma once
-#include <vector>
-
 #include <opencv2/core.hpp>
+#include <vector>
 
 #include "vision/orbvo/orb_feature.h"
 #include "vision/orbvo/steered_brief.h"
@@ -10,22 +9,24 @@ namespace deepnav {
 
 // Bucketed ORB: each pyramid level is cut into grid_cols x grid_rows cells and each cell keeps its
 // strongest FAST-9 corners, so features spread over the image instead of piling up on the most
-// contrasted object. Underwater images are often low in contrast and uneven (light cone, backscatter),
-// so every cell has its own FAST threshold: on the first image it follows the cell's contrast,
-// t = clamp(gain * stddev_cell, t_min, t_max); afterwards it tracks the number of corners the cell
-// gives, up by 1/8 when they exceed 4x the budget and down by 1/8 below 2x (FAST's cost grows with the
-// number of corners, about 1 ms per 2000 on one core). A cell that yields fewer than half its budget is
-// searched again at t_min at once. Keep one extractor per camera: the thresholds are its state.
+// contrasted object. Underwater images are often low in contrast and uneven (light cone,
+// backscatter), so every cell has its own FAST threshold: on the first image it follows the cell's
+// contrast, t = clamp(gain * stddev_cell, t_min, t_max); afterwards it tracks the number of corners
+// the cell gives, up by 1/8 when they exceed 4x the budget and down by 1/8 below 2x (FAST's cost
+// grows with the number of corners, about 1 ms per 2000 on one core). A cell that yields fewer than
+// half its budget is searched again at t_min at once. Keep one extractor per camera: the thresholds
+// are its state.
 struct OrbExtractorConfig {
-  int grid_cols = 8;                // cells across, [1, 64]
-  int grid_rows = 6;                // cells down, [1, 64]
-  int max_features_per_cell = 10;   // level-0 budget per cell; level l keeps max / s^(2l), at least 1
+  int grid_cols = 8;  // cells across, [1, 64]
+  int grid_rows = 6;  // cells down, [1, 64]
+  // Level-0 budget per cell; level l keeps max / s^(2l), at least 1
+  int max_features_per_cell = 10;
   int n_levels = 3;                 // pyramid levels, [1, 8]
   double scale_factor = 1.2;        // between levels, (1, 2]
   int fast_threshold_max = 40;      // grey levels, [1, 255]
   int fast_threshold_min = 5;       // grey levels, [1, fast_threshold_max]
   double fast_contrast_gain = 0.8;  // first threshold per unit of cell intensity stddev, > 0
-  double smoothing_sigma_px = 1.5;  // Gaussian applied before BRIEF sampling (ORB: about 2), > 0
+  double smoothing_sigma_px = 2.0;  // Gaussian applied before BRIEF sampling (as ORB), > 0
 };
 
 // Allocation: every image and bookkeeping buffer is sized in init(); cv::FAST and cv::GaussianBlur
@@ -39,12 +40,15 @@ class GridOrbExtractor {
   int levels() const { return config_.n_levels; }
   double levelScale(int level) const { return scales_[level]; }
 
-  // Features of `grey` (CV_8UC1 of the init size), sorted by level; descriptors[i] belongs to features[i].
-  // Both vectors are cleared first and never grow past capacity(). Returns the count, -1 for a bad image.
-  int extract(const cv::Mat& grey, std::vector<OrbFeature>* features, std::vector<OrbDescriptor>* descriptors);
+  // Features of `grey` (CV_8UC1 of the init size), sorted by level; descriptors[i] belongs to
+  // features[i]. Both vectors are cleared first and never grow past capacity(). Returns the count,
+  // -1 for a bad image.
+  int extract(const cv::Mat& grey, std::vector<OrbFeature>* features,
+              std::vector<OrbDescriptor>* descriptors);
 
  private:
-  void extractLevel(int level, std::vector<OrbFeature>* features, std::vector<OrbDescriptor>* descriptors);
+  void extractLevel(int level, std::vector<OrbFeature>* features,
+                    std::vector<OrbDescriptor>* descriptors);
   void detectCell(const cv::Mat& image, const cv::Rect& cell, int budget, int* threshold);
 
   OrbExtractorConfig config_{};
@@ -55,7 +59,7 @@ class GridOrbExtractor {
   std::vector<cv::Mat> smoothed_;
   std::vector<double> scales_;
   std::vector<int> cell_budget_;
-  std::vector<int> cell_threshold_;  // per level and cell; 0 until the first image
+  std::vector<int> cell_threshold_;         // per level and cell; 0 until the first image
   std::vector<cv::KeyPoint> fast_corners_;  // one FAST call
   std::vector<cv::KeyPoint> cell_corners_;  // the corners of one cell
   SteeredBrief brief_;

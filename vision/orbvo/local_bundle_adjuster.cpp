@@ -10,7 +10,8 @@ namespace deepnav {
 namespace {
 
 constexpr double kMinDepthM = 1e-3;
-constexpr double kBehindCameraCost = 1e6;  // cost of an observation whose point went behind the camera
+// Cost of an observation whose point went behind the camera
+constexpr double kBehindCameraCost = 1e6;
 
 // Huber's rho of a squared whitened residual e2.
 double huberCost(double e2, double k) {
@@ -50,8 +51,8 @@ bool LocalBundleAdjuster::init(int max_cameras, int max_points, int max_observat
 
 double LocalBundleAdjuster::linearise(const StereoRig& rig, const BundleAdjusterConfig& config,
                                       const Eigen::Matrix3d* R, const Eigen::Vector3d* t,
-                                      const Eigen::Vector3d* points, int n_obs, const BaObservation* obs,
-                                      bool with_jacobians) {
+                                      const Eigen::Vector3d* points, int n_obs,
+                                      const BaObservation* obs, bool with_jacobians) {
   double cost = 0.0;
   for (int k = 0; k < n_obs; ++k) {
     const BaObservation& o = obs[k];
@@ -88,8 +89,8 @@ double LocalBundleAdjuster::linearise(const StereoRig& rig, const BundleAdjuster
 }
 
 // One damped Gauss-Newton step on the reduced camera system; fills dc_ and dp_.
-bool LocalBundleAdjuster::solveStep(int n_cameras, int n_fixed, int n_points, const BaObservation* obs,
-                                    double lambda) {
+bool LocalBundleAdjuster::solveStep(int n_cameras, int n_fixed, int n_points,
+                                    const BaObservation* obs, double lambda) {
   const int n_free = n_cameras - n_fixed;
   for (int c = 0; c < n_free; ++c) {
     u_[c].setZero();
@@ -156,14 +157,16 @@ bool LocalBundleAdjuster::solveStep(int n_cameras, int n_fixed, int n_points, co
   return true;
 }
 
-bool LocalBundleAdjuster::optimise(const StereoRig& rig, const BundleAdjusterConfig& config, int n_cameras,
-                                   int n_fixed, Eigen::Matrix3d* R_cam_world, Eigen::Vector3d* p_world_in_cam_m,
-                                   int n_points, Eigen::Vector3d* p_in_world_m, int n_observations,
+bool LocalBundleAdjuster::optimise(const StereoRig& rig, const BundleAdjusterConfig& config,
+                                   int n_cameras, int n_fixed, Eigen::Matrix3d* R_cam_world,
+                                   Eigen::Vector3d* p_world_in_cam_m, int n_points,
+                                   Eigen::Vector3d* p_in_world_m, int n_observations,
                                    const BaObservation* observations, std::uint8_t* outlier,
                                    BundleAdjusterSummary* summary) {
   *summary = BundleAdjusterSummary();
-  if (n_cameras < 1 || n_cameras > max_cameras_ || n_fixed < 1 || n_fixed > n_cameras || n_points < 0 ||
-      n_points > max_points_ || n_observations < 0 || n_observations > max_observations_) {
+  if (n_cameras < 1 || n_cameras > max_cameras_ || n_fixed < 1 || n_fixed > n_cameras ||
+      n_points < 0 || n_points > max_points_ || n_observations < 0 ||
+      n_observations > max_observations_) {
     return false;
   }
   // Group observations by point (counting sort).
@@ -175,7 +178,8 @@ bool LocalBundleAdjuster::optimise(const StereoRig& rig, const BundleAdjusterCon
   point_start_[0] = 0;
 
   double lambda = config.initial_lambda;
-  double cost = linearise(rig, config, R_cam_world, p_world_in_cam_m, p_in_world_m, n_observations, observations, true);
+  double cost = linearise(rig, config, R_cam_world, p_world_in_cam_m, p_in_world_m, n_observations,
+                          observations, true);
   summary->initial_cost = cost;
   for (int it = 0; it < config.iterations && n_cameras > n_fixed; ++it) {
     if (!solveStep(n_cameras, n_fixed, n_points, observations, lambda)) break;
@@ -191,14 +195,15 @@ bool LocalBundleAdjuster::optimise(const StereoRig& rig, const BundleAdjusterCon
       point_backup_[j] = p_in_world_m[j];
       p_in_world_m[j] += dp_[j];
     }
-    const double new_cost =
-        linearise(rig, config, R_cam_world, p_world_in_cam_m, p_in_world_m, n_observations, observations, false);
+    const double new_cost = linearise(rig, config, R_cam_world, p_world_in_cam_m, p_in_world_m,
+                                      n_observations, observations, false);
     if (new_cost < cost) {
       ++summary->accepted_steps;
       const double gain = (cost - new_cost) / std::max(cost, 1e-12);
       cost = new_cost;
       lambda = std::max(lambda / 10.0, 1e-9);
-      linearise(rig, config, R_cam_world, p_world_in_cam_m, p_in_world_m, n_observations, observations, true);
+      linearise(rig, config, R_cam_world, p_world_in_cam_m, p_in_world_m, n_observations,
+                observations, true);
       if (gain < 1e-6) break;
     } else {
       for (int c = n_fixed; c < n_cameras; ++c) {
@@ -211,7 +216,8 @@ bool LocalBundleAdjuster::optimise(const StereoRig& rig, const BundleAdjusterCon
   }
   summary->final_cost = cost;
   // Classify at the final state.
-  linearise(rig, config, R_cam_world, p_world_in_cam_m, p_in_world_m, n_observations, observations, true);
+  linearise(rig, config, R_cam_world, p_world_in_cam_m, p_in_world_m, n_observations, observations,
+            true);
   for (int k = 0; k < n_observations; ++k) {
     const double gate = rows_[k] == 3 ? config.chi2_stereo : config.chi2_mono;
     outlier[k] = rows_[k] == 0 || residual_[k].squaredNorm() > gate;

@@ -1,20 +1,19 @@
 #pragma once
-#include <cstdint>
-#include <vector>
-
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
+#include <cstdint>
+#include <vector>
 
 #include "vision/orbvo/stereo_rig.h"
 
 namespace deepnav {
 
 struct BundleAdjusterConfig {
-  int iterations = 6;             // Levenberg-Marquardt steps (accepted or not), >= 1
-  double huber_k = 2.45;          // Huber threshold on the whitened residual norm
-  double chi2_mono = 5.991;       // outlier gate of a left-only observation after the solve
-  double chi2_stereo = 7.815;     // outlier gate of a stereo observation after the solve
-  double initial_lambda = 1e-4;   // LM damping, relative to the diagonal
+  int iterations = 6;            // Levenberg-Marquardt steps (accepted or not), >= 1
+  double huber_k = 2.45;         // Huber threshold on the whitened residual norm
+  double chi2_mono = 5.991;      // outlier gate of a left-only observation after the solve
+  double chi2_stereo = 7.815;    // outlier gate of a stereo observation after the solve
+  double initial_lambda = 1e-4;  // LM damping, relative to the diagonal
 };
 
 // One observation of point `point` by camera `camera` (left pixel, optional right column).
@@ -34,9 +33,9 @@ struct BundleAdjusterSummary {
 };
 
 // Windowed bundle adjustment of camera poses T_cam_world (left perturbation as in refineCameraPose)
-// and world points, by Levenberg-Marquardt on the Huber-weighted stereo reprojection error. Each step
-// eliminates the points with the Schur complement (Triggs et al., "Bundle adjustment - a modern
-// synthesis", 2000, sec. 6.1): with the camera block U, point blocks V_j and cross blocks W,
+// and world points, by Levenberg-Marquardt on the Huber-weighted stereo reprojection error. Each
+// step eliminates the points with the Schur complement (Triggs et al., "Bundle adjustment - a
+// modern synthesis", 2000, sec. 6.1): with the camera block U, point blocks V_j and cross blocks W,
 //   (U - W V^-1 W^T) dc = b_c - W V^-1 b_p,    dp_j = V_j^-1 (b_pj - W_j^T dc),
 // the reduced camera system being small and dense (6 per free camera). Cameras [0, n_fixed) stay
 // fixed and hold the gauge. Every buffer is sized in init(); optimise() does not allocate.
@@ -46,14 +45,16 @@ class LocalBundleAdjuster {
 
   // Refines the poses of cameras [n_fixed, n_cameras) and every point in place; outlier[k] (n_obs
   // entries) flags the observations beyond their chi-square gate at the end. False for bad sizes.
-  bool optimise(const StereoRig& rig, const BundleAdjusterConfig& config, int n_cameras, int n_fixed,
-                Eigen::Matrix3d* R_cam_world, Eigen::Vector3d* p_world_in_cam_m, int n_points,
-                Eigen::Vector3d* p_in_world_m, int n_observations, const BaObservation* observations,
-                std::uint8_t* outlier, BundleAdjusterSummary* summary);
+  bool optimise(const StereoRig& rig, const BundleAdjusterConfig& config, int n_cameras,
+                int n_fixed, Eigen::Matrix3d* R_cam_world, Eigen::Vector3d* p_world_in_cam_m,
+                int n_points, Eigen::Vector3d* p_in_world_m, int n_observations,
+                const BaObservation* observations, std::uint8_t* outlier,
+                BundleAdjusterSummary* summary);
 
  private:
-  double linearise(const StereoRig& rig, const BundleAdjusterConfig& config, const Eigen::Matrix3d* R,
-                   const Eigen::Vector3d* t, const Eigen::Vector3d* points, int n_obs, const BaObservation* obs,
+  double linearise(const StereoRig& rig, const BundleAdjusterConfig& config,
+                   const Eigen::Matrix3d* R, const Eigen::Vector3d* t,
+                   const Eigen::Vector3d* points, int n_obs, const BaObservation* obs,
                    bool with_jacobians);
   bool solveStep(int n_cameras, int n_fixed, int n_points, const BaObservation* obs, double lambda);
 
@@ -66,8 +67,8 @@ class LocalBundleAdjuster {
   std::vector<Eigen::Vector3d> residual_;
   std::vector<int> rows_;
   std::vector<double> weight_;
-  std::vector<int> by_point_;        // observation indices grouped by point
-  std::vector<int> point_start_;     // by_point_[point_start_[j] .. point_start_[j+1])
+  std::vector<int> by_point_;     // observation indices grouped by point
+  std::vector<int> point_start_;  // by_point_[point_start_[j] .. point_start_[j+1])
   // Per point.
   std::vector<Eigen::Matrix3d> v_inv_;
   std::vector<Eigen::Vector3d> b_p_;
@@ -81,7 +82,7 @@ class LocalBundleAdjuster {
   Eigen::VectorXd rhs_;
   Eigen::VectorXd dc_;
   Eigen::LDLT<Eigen::MatrixXd> ldlt_;
-  std::vector<Eigen::Matrix<double, 6, 6>> u_;   // camera blocks of J^T W J
+  std::vector<Eigen::Matrix<double, 6, 6>> u_;  // camera blocks of J^T W J
   std::vector<Eigen::Matrix<double, 6, 1>> b_c_;
 };
 

@@ -5,7 +5,8 @@
 
 namespace deepnav {
 
-// One oriented FAST corner. Coordinates are in level-0 pixels whatever the pyramid level it was found on.
+// One oriented FAST corner. Coordinates are in level-0 pixels whatever the pyramid level it was
+// found on.
 struct OrbFeature {
   float u_px = 0.0f;
   float v_px = 0.0f;

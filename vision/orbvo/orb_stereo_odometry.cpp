@@ -4,9 +4,8 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
-#include <utility>
-
 #include <opencv2/imgproc.hpp>
+#include <utility>
 
 #include "nav/ekf/so3.h"
 #include "vision/orbvo/projection_search.h"
@@ -19,7 +18,8 @@ namespace {
 constexpr double kMinProjectionDepthM = 0.05;
 
 bool insideImage(const StereoRig& rig, const Eigen::Vector2d& uv_px) {
-  return uv_px.x() >= 0.0 && uv_px.y() >= 0.0 && uv_px.x() <= rig.width_px - 1.0 && uv_px.y() <= rig.height_px - 1.0;
+  return uv_px.x() >= 0.0 && uv_px.y() >= 0.0 && uv_px.x() <= rig.width_px - 1.0 &&
+         uv_px.y() <= rig.height_px - 1.0;
 }
 
 // The grey image of `image` (CV_8UC1 as is, CV_8UC3 converted into the preallocated *grey).
@@ -39,7 +39,8 @@ bool OrbStereoOdometry::init(const OrbVoConfig& config, const StereoRig& rig, st
     *error = std::string("orbvo config: ") + bad;
     return false;
   }
-  if (rig.fx_px <= 0.0 || rig.fy_px <= 0.0 || rig.baseline_m <= 0.0 || rig.width_px < 64 || rig.height_px < 64) {
+  if (rig.fx_px <= 0.0 || rig.fy_px <= 0.0 || rig.baseline_m <= 0.0 || rig.width_px < 64 ||
+      rig.height_px < 64) {
     *error = "orbvo rig: fx, fy, baseline must be > 0 and the image at least 64x64";
     return false;
   }
@@ -50,14 +51,15 @@ bool OrbStereoOdometry::init(const OrbVoConfig& config, const StereoRig& rig, st
     return false;
   }
   OrbExtractorConfig right_config = config.extractor;
-  right_config.max_features_per_cell =
-      static_cast<int>(std::lround(config.extractor.max_features_per_cell * config.right_budget_factor));
+  right_config.max_features_per_cell = static_cast<int>(
+      std::lround(config.extractor.max_features_per_cell * config.right_budget_factor));
   if (!right_extractor_.init(right_config, rig.width_px, rig.height_px)) {
     *error = "orbvo right extractor: bad configuration";
     return false;
   }
   capacity_ = extractor_.capacity();
-  if (!stereo_.init(config.stereo, rig, right_extractor_.capacity(), config.extractor.scale_factor)) {
+  if (!stereo_.init(config.stereo, rig, right_extractor_.capacity(),
+                    config.extractor.scale_factor)) {
     *error = "orbvo stereo: bad band, depth range, ratio or SAD window";
     return false;
   }
@@ -131,7 +133,8 @@ bool OrbStereoOdometry::process(const StereoFrame& frame, OrbVoOutput* out) {
   return process(frame.t_us, frame.left, frame.right, out);
 }
 
-bool OrbStereoOdometry::process(TimeUs t_us, const cv::Mat& left, const cv::Mat& right, OrbVoOutput* out) {
+bool OrbStereoOdometry::process(TimeUs t_us, const cv::Mat& left, const cv::Mat& right,
+                                OrbVoOutput* out) {
   *out = OrbVoOutput();
   out->t_us = t_us;
   keyframe_inserted_ = false;
@@ -156,8 +159,8 @@ bool OrbStereoOdometry::process(TimeUs t_us, const cv::Mat& left, const cv::Mat&
     }
     ++lost_frames_;
     has_velocity_ = false;
-    if (initialised_ && config_.reset_after_lost_frames > 0 && lost_frames_ >= config_.reset_after_lost_frames &&
-        startMap(out)) {
+    if (initialised_ && config_.reset_after_lost_frames > 0 &&
+        lost_frames_ >= config_.reset_after_lost_frames && startMap(out)) {
       return true;
     }
     out->status = OrbVoStatus::kLost;
@@ -167,8 +170,8 @@ bool OrbStereoOdometry::process(TimeUs t_us, const cv::Mat& left, const cv::Mat&
   }
   if (keyframeNeeded()) insertKeyframe();
   ++frames_since_keyframe_;
-  // The relative pose uses the final poses (after a bundle adjustment), so that chaining the outputs
-  // gives the odometry's trajectory exactly; its covariance is the tracking one.
+  // The relative pose uses the final poses (after a bundle adjustment), so that chaining the
+  // outputs gives the odometry's trajectory exactly; its covariance is the tracking one.
   const RelativeCameraPose rel = relativeCameraPose(last_tracked_.pose, cur_.pose);
   out->status = relocalised ? OrbVoStatus::kRelocalised : OrbVoStatus::kOk;
   out->t_reference_us = last_tracked_.t_us;
@@ -198,14 +201,19 @@ bool OrbStereoOdometry::detect(TimeUs t_us, const cv::Mat& left, const cv::Mat& 
   cur_.features.clear();
   cur_.tracked = 0;
   cur_.stereo_points = 0;
-  if (left.cols != rig_.width_px || left.rows != rig_.height_px || right.size() != left.size()) return false;
+  if (left.cols != rig_.width_px || left.rows != rig_.height_px || right.size() != left.size())
+    return false;
   const cv::Mat* grey_left = greyOf(left, &grey_left_);
   const cv::Mat* grey_right = greyOf(right, &grey_right_);
   if (grey_left == nullptr || grey_right == nullptr) return false;
+  cur_left_ = *grey_left;
+  cur_right_ = *grey_right;
   if (extractor_.extract(*grey_left, &cur_.features, &cur_.descriptors) < 0) return false;
-  if (right_extractor_.extract(*grey_right, &right_features_, &right_descriptors_) < 0) return false;
-  cur_.stereo_points = stereo_.match(*grey_left, *grey_right, cur_.features, cur_.descriptors, right_features_,
-                                     right_descriptors_, &cur_.u_right_px, &cur_.p_in_cam_m);
+  if (right_extractor_.extract(*grey_right, &right_features_, &right_descriptors_) < 0)
+    return false;
+  cur_.stereo_points =
+      stereo_.match(*grey_left, *grey_right, cur_.features, cur_.descriptors, right_features_,
+                    right_descriptors_, &cur_.u_right_px, &cur_.p_in_cam_m);
   const std::size_t n = cur_.features.size();
   cur_.map_point.assign(n, -1);
   cur_.match_distance.assign(n, std::numeric_limits<int>::max());
@@ -257,26 +265,59 @@ bool OrbStereoOdometry::trackFrame() {
   int matches = searchPreviousFrame(predicted, config_.frame_search.radius_px);
   if (matches < config_.min_frame_matches) {
     clearAssociations();
-    matches = searchPreviousFrame(predicted, config_.frame_search.radius_px * config_.frame_search_widen);
+    matches =
+        searchPreviousFrame(predicted, config_.frame_search.radius_px * config_.frame_search_widen);
   }
   CameraPoseEstimate pose = predicted;
   if (!estimatePose(PoseStart::kRansacOrGiven, &pose)) {
-    // The previous frame alone is not enough (e.g. after a jerk): try the local map around the prediction.
+    // The previous frame alone is not enough (e.g. after a jerk): try the local map around the
+    // prediction.
     clearAssociations();
     pose = predicted;
-    if (searchLocalMap(pose) < config_.refiner.min_inliers || !estimatePose(PoseStart::kRansacOrGiven, &pose)) {
+    if (searchLocalMap(pose) < config_.refiner.min_inliers ||
+        !estimatePose(PoseStart::kRansacOrGiven, &pose)) {
       return false;
     }
   }
   searchLocalMap(pose);
+  completeStereo(pose);
   if (!estimatePose(PoseStart::kGiven, &pose)) return false;
   cur_.pose = pose;
   return cur_.tracked >= config_.min_tracked;
 }
 
+// Guided stereo: a tracked corner without a right match gets one from the ZSAD search around the
+// disparity d = fx b / z its map point predicts (the descriptor matching along the whole row loses
+// many corners in low-contrast images; here the search spans a few pixels). Returns the count.
+int OrbStereoOdometry::completeStereo(const CameraPoseEstimate& pose) {
+  int added = 0;
+  for (std::size_t j = 0; j < cur_.map_point.size(); ++j) {
+    const int m = cur_.map_point[j];
+    if (m < 0 || cur_.u_right_px[j] >= 0.0f) continue;
+    const Eigen::Vector3d p_in_cam_m =
+        pose.R_cam_world * map_.point(m).p_in_world_m + pose.p_world_in_cam_m;
+    if (p_in_cam_m.z() < config_.stereo.min_depth_m || p_in_cam_m.z() > config_.stereo.max_depth_m)
+      continue;
+    const OrbFeature& f = cur_.features[j];
+    const double predicted_disparity_px = rig_.fx_px * rig_.baseline_m / p_in_cam_m.z();
+    double u_right = 0.0;
+    if (!stereo_.refineRightColumn(cur_left_, cur_right_, f.u_px, f.v_px,
+                                   f.u_px - predicted_disparity_px, &u_right)) {
+      continue;
+    }
+    const double disparity_px = f.u_px - u_right;
+    if (disparity_px <= 0.0) continue;
+    cur_.u_right_px[j] = static_cast<float>(u_right);
+    cur_.p_in_cam_m[j] = triangulateStereo(rig_, f.u_px, f.v_px, disparity_px);
+    ++added;
+  }
+  return added;
+}
+
 void OrbStereoOdometry::clearAssociations() {
   std::fill(cur_.map_point.begin(), cur_.map_point.end(), -1);
-  std::fill(cur_.match_distance.begin(), cur_.match_distance.end(), std::numeric_limits<int>::max());
+  std::fill(cur_.match_distance.begin(), cur_.match_distance.end(),
+            std::numeric_limits<int>::max());
   std::fill(cur_.available.begin(), cur_.available.end(), std::uint8_t{1});
 }
 
@@ -290,13 +331,14 @@ int OrbStereoOdometry::searchPreviousFrame(const CameraPoseEstimate& predicted, 
     MapPoint& point = map_.point(m);
     if (!point.alive || point.visit_stamp == stamp) continue;
     point.visit_stamp = stamp;
-    const Eigen::Vector3d p_in_cam_m = predicted.R_cam_world * point.p_in_world_m + predicted.p_world_in_cam_m;
+    const Eigen::Vector3d p_in_cam_m =
+        predicted.R_cam_world * point.p_in_world_m + predicted.p_world_in_cam_m;
     if (p_in_cam_m.z() < kMinProjectionDepthM) continue;
     const Eigen::Vector2d uv = projectLeft(rig_, p_in_cam_m);
     if (!insideImage(rig_, uv)) continue;
-    const ProjectionMatch match = searchNearProjection(grid_, cur_.features, cur_.descriptors, cur_.available,
-                                                       level_scale_.data(), uv, prev_.features[i].level,
-                                                       prev_.descriptors[i], search);
+    const ProjectionMatch match = searchNearProjection(
+        grid_, cur_.features, cur_.descriptors, cur_.available, level_scale_.data(), uv,
+        prev_.features[i].level, prev_.descriptors[i], search);
     if (match.index < 0 || match.distance >= cur_.match_distance[match.index]) continue;
     cur_.map_point[match.index] = m;
     cur_.match_distance[match.index] = match.distance;
@@ -322,7 +364,8 @@ int OrbStereoOdometry::searchLocalMap(const CameraPoseEstimate& pose) {
       anchor_keyframe_id_ = -1;
     } else {
       constexpr int kAnchorNeighbours = 2;
-      for (int id = anchor_keyframe_id_ - kAnchorNeighbours; id <= anchor_keyframe_id_ + kAnchorNeighbours; ++id) {
+      for (int id = anchor_keyframe_id_ - kAnchorNeighbours;
+           id <= anchor_keyframe_id_ + kAnchorNeighbours; ++id) {
         const int age = newest_id - id;
         if (age < local || age >= map_.keyframeCount() || map_.keyframe(age).id != id) continue;
         searchKeyframePoints(map_.keyframe(age), pose, stamp);
@@ -334,19 +377,21 @@ int OrbStereoOdometry::searchLocalMap(const CameraPoseEstimate& pose) {
   return matches;
 }
 
-void OrbStereoOdometry::searchKeyframePoints(const Keyframe& kf, const CameraPoseEstimate& pose, int stamp) {
+void OrbStereoOdometry::searchKeyframePoints(const Keyframe& kf, const CameraPoseEstimate& pose,
+                                             int stamp) {
   for (const int m : kf.map_point) {
     if (m < 0) continue;
     MapPoint& point = map_.point(m);
     if (!point.alive || point.visit_stamp == stamp) continue;
     point.visit_stamp = stamp;
-    const Eigen::Vector3d p_in_cam_m = pose.R_cam_world * point.p_in_world_m + pose.p_world_in_cam_m;
+    const Eigen::Vector3d p_in_cam_m =
+        pose.R_cam_world * point.p_in_world_m + pose.p_world_in_cam_m;
     if (p_in_cam_m.z() < kMinProjectionDepthM) continue;
     const Eigen::Vector2d uv = projectLeft(rig_, p_in_cam_m);
     if (!insideImage(rig_, uv)) continue;
-    const ProjectionMatch match = searchNearProjection(grid_, cur_.features, cur_.descriptors, cur_.available,
-                                                       level_scale_.data(), uv, point.level, point.descriptor,
-                                                       config_.map_search);
+    const ProjectionMatch match = searchNearProjection(
+        grid_, cur_.features, cur_.descriptors, cur_.available, level_scale_.data(), uv,
+        point.level, point.descriptor, config_.map_search);
     if (match.index < 0 || match.distance >= cur_.match_distance[match.index]) continue;
     cur_.map_point[match.index] = m;
     cur_.match_distance[match.index] = match.distance;
@@ -392,7 +437,8 @@ bool OrbStereoOdometry::estimatePose(PoseStart start, CameraPoseEstimate* pose) 
       return false;
     }  // else RANSAC failed: start from the given pose, the Huber loss and the gates must cope
   }
-  if (!refineCameraPose(rig_, config_.refiner, observations_.data(), n, inlier_.data(), &estimate)) return false;
+  if (!refineCameraPose(rig_, config_.refiner, observations_.data(), n, inlier_.data(), &estimate))
+    return false;
   for (int k = 0; k < n; ++k) {
     const int j = observation_feature_[k];
     if (!inlier_[k]) cur_.map_point[j] = -1;
@@ -422,7 +468,8 @@ bool OrbStereoOdometry::keyframeNeeded() const {
 }
 
 void OrbStereoOdometry::insertKeyframe() {
-  // References first: pushing may evict the oldest keyframe, which must not free the tracked points.
+  // References first: pushing may evict the oldest keyframe, which must not free the tracked
+  // points.
   const int n = static_cast<int>(cur_.features.size());
   for (int j = 0; j < n; ++j) {
     const int m = cur_.map_point[j];
@@ -444,8 +491,8 @@ void OrbStereoOdometry::insertKeyframe() {
   const Eigen::Vector3d p_cam_in_world_m = -R_world_cam * cur_.pose.p_world_in_cam_m;
   for (int j = 0; j < n; ++j) {
     if (cur_.map_point[j] >= 0 || cur_.u_right_px[j] < 0.0f) continue;
-    cur_.map_point[j] = map_.createPoint(R_world_cam * cur_.p_in_cam_m[j] + p_cam_in_world_m, cur_.descriptors[j],
-                                         cur_.features[j].level);
+    cur_.map_point[j] = map_.createPoint(R_world_cam * cur_.p_in_cam_m[j] + p_cam_in_world_m,
+                                         cur_.descriptors[j], cur_.features[j].level);
   }
   kf.map_point.assign(cur_.map_point.begin(), cur_.map_point.end());
   frames_since_keyframe_ = 0;
@@ -488,8 +535,9 @@ void OrbStereoOdometry::bundleAdjustLocalWindow() {
     }
   }
   BundleAdjusterSummary summary;
-  if (!bundle_adjuster_.optimise(rig_, config_.bundle, window, 1, ba_R_.data(), ba_t_.data(), n_points,
-                                 ba_points_.data(), n_obs, ba_observations_.data(), ba_outlier_.data(), &summary)) {
+  if (!bundle_adjuster_.optimise(rig_, config_.bundle, window, 1, ba_R_.data(), ba_t_.data(),
+                                 n_points, ba_points_.data(), n_obs, ba_observations_.data(),
+                                 ba_outlier_.data(), &summary)) {
     return;
   }
   for (int c = 1; c < window; ++c) {
@@ -513,7 +561,8 @@ void OrbStereoOdometry::bundleAdjustLocalWindow() {
   cur_.pose.p_world_in_cam_m = newest.p_world_in_cam_m;
 }
 
-// Number of query features (every stride-th) with a ratio-test match among the keyframe's map points.
+// Number of query features (every stride-th) with a ratio-test match among the keyframe's map
+// points.
 int OrbStereoOdometry::rankKeyframe(const Keyframe& kf, int stride) const {
   int score = 0;
   for (std::size_t j = 0; j < cur_.features.size(); j += stride) {
@@ -556,7 +605,8 @@ int OrbStereoOdometry::matchKeyframe(const Keyframe& kf) {
         second = d;
       }
     }
-    if (best_f < 0 || best > config_.reloc_max_hamming || best >= config_.reloc_ratio * second) continue;
+    if (best_f < 0 || best > config_.reloc_max_hamming || best >= config_.reloc_ratio * second)
+      continue;
     if (reloc_owner_[best_f] < 0 || best < reloc_owner_distance_[best_f]) {
       reloc_owner_[best_f] = static_cast<int>(j);
       reloc_owner_distance_[best_f] = best;
@@ -581,8 +631,8 @@ bool OrbStereoOdometry::relocalise() {
   const int stride = std::max(1, n / config_.reloc_query_features);
   for (int age = 0; age < n_kf; ++age) reloc_score_[age] = rankKeyframe(map_.keyframe(age), stride);
   for (int attempt = 0; attempt < std::min(config_.reloc_candidates, n_kf); ++attempt) {
-    const int age = static_cast<int>(std::max_element(reloc_score_.begin(), reloc_score_.begin() + n_kf) -
-                                     reloc_score_.begin());
+    const int age = static_cast<int>(
+        std::max_element(reloc_score_.begin(), reloc_score_.begin() + n_kf) - reloc_score_.begin());
     if (reloc_score_[age] * stride < config_.reloc_min_inliers / 2) break;
     reloc_score_[age] = -1;
     const Keyframe& kf = map_.keyframe(age);
@@ -595,7 +645,9 @@ bool OrbStereoOdometry::relocalise() {
     anchor_keyframe_id_ = kf.id;
     anchor_until_keyframe_id_ = map_.keyframe(0).id + config_.local_keyframes;
     searchLocalMap(pose);
-    if (!estimatePose(PoseStart::kGiven, &pose) || cur_.tracked < config_.reloc_min_inliers) continue;
+    completeStereo(pose);
+    if (!estimatePose(PoseStart::kGiven, &pose) || cur_.tracked < config_.reloc_min_inliers)
+      continue;
     cur_.pose = pose;
     return true;
   }

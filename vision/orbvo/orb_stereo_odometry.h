@@ -1,10 +1,9 @@
 #pragma once
+#include <Eigen/Core>
 #include <cstdint>
+#include <opencv2/core.hpp>
 #include <string>
 #include <vector>
-
-#include <Eigen/Core>
-#include <opencv2/core.hpp>
 
 #include "vision/orbvo/feature_grid.h"
 #include "vision/orbvo/grid_orb_extractor.h"
@@ -27,10 +26,13 @@ namespace deepnav {
 //  2. tracking: the previous frame's map points projected by a constant-velocity prediction and
 //     matched in a window; pose by PnP RANSAC then Huber Gauss-Newton on the stereo reprojection
 //     error (refineCameraPose); then the points of the local keyframes projected by that pose,
-//     matched in a small window, and a second refinement whose inliers are the tracked features;
+//     matched in a small window; tracked corners the stereo matcher missed get their right column
+//     from a ZSAD search around the disparity their map point predicts; a second refinement, whose
+//     inliers are the tracked features;
 //  3. keyframe policy; a keyframe adds the untracked stereo points to the map and runs a windowed
 //     bundle adjustment of the newest keyframes, the oldest fixed (LocalBundleAdjuster);
-//  4. when tracking fails: relocalisation against every stored keyframe (descriptor ranking, then PnP
+//  4. when tracking fails: relocalisation against every stored keyframe (descriptor ranking, then
+//  PnP
 //     RANSAC and refinement on the best candidates).
 // Output: relative pose of this frame's left camera in the previous (or last tracked) frame's, its
 // 6x6 covariance, the number of tracked features and a status.
@@ -61,8 +63,8 @@ class OrbStereoOdometry {
     std::vector<OrbDescriptor> descriptors;
     std::vector<float> u_right_px;
     std::vector<Eigen::Vector3d> p_in_cam_m;
-    std::vector<int> map_point;       // per feature, -1 none
-    std::vector<int> match_distance;  // per feature, Hamming distance of its map point match
+    std::vector<int> map_point;           // per feature, -1 none
+    std::vector<int> match_distance;      // per feature, Hamming distance of its map point match
     std::vector<std::uint8_t> available;  // per feature: may still take a map point
     CameraPoseEstimate pose;
     int tracked = 0;
@@ -80,6 +82,7 @@ class OrbStereoOdometry {
   bool relocalise();
   int searchPreviousFrame(const CameraPoseEstimate& predicted, double radius_px);
   int searchLocalMap(const CameraPoseEstimate& pose);
+  int completeStereo(const CameraPoseEstimate& pose);
   void searchKeyframePoints(const Keyframe& kf, const CameraPoseEstimate& pose, int stamp);
   enum class PoseStart { kGiven, kRansacOrGiven, kRansacOnly };
   bool estimatePose(PoseStart start, CameraPoseEstimate* pose);
@@ -104,7 +107,8 @@ class OrbStereoOdometry {
   LocalBundleAdjuster bundle_adjuster_;
   VoMap map_;
 
-  cv::Mat grey_left_, grey_right_;
+  cv::Mat grey_left_, grey_right_;  // BGR input converted
+  cv::Mat cur_left_, cur_right_;    // headers of this frame's grey images
   std::vector<OrbFeature> right_features_;
   std::vector<OrbDescriptor> right_descriptors_;
   FrameState cur_, prev_;
@@ -127,8 +131,8 @@ class OrbStereoOdometry {
   std::vector<std::uint8_t> ba_outlier_;
 
   // Relocalisation scratch.
-  std::vector<int> reloc_score_;       // per keyframe age
-  std::vector<int> reloc_owner_;       // per keyframe feature: best current feature
+  std::vector<int> reloc_score_;  // per keyframe age
+  std::vector<int> reloc_owner_;  // per keyframe feature: best current feature
   std::vector<int> reloc_owner_distance_;
 
   // Tracking state.

@@ -1,7 +1,6 @@
 #include "vision/orbvo/pnp_ransac.h"
 
 #include <algorithm>
-
 #include <opencv2/calib3d.hpp>
 
 #include "nav/ekf/so3.h"
@@ -24,7 +23,8 @@ void PnpRansac::clear() {
 
 bool PnpRansac::add(const Eigen::Vector3d& p_in_world_m, const Eigen::Vector2d& uv_px) {
   if (size() >= capacity_) return false;
-  object_points_.emplace_back(static_cast<float>(p_in_world_m.x()), static_cast<float>(p_in_world_m.y()),
+  object_points_.emplace_back(static_cast<float>(p_in_world_m.x()),
+                              static_cast<float>(p_in_world_m.y()),
                               static_cast<float>(p_in_world_m.z()));
   image_points_.emplace_back(static_cast<float>(uv_px.x()), static_cast<float>(uv_px.y()));
   return true;
@@ -38,9 +38,10 @@ bool PnpRansac::solve(const StereoRig& rig, const PnpRansacConfig& config, Camer
   const cv::Matx33d K(rig.fx_px, 0.0, rig.cx_px, 0.0, rig.fy_px, rig.cy_px, 0.0, 0.0, 1.0);
   cv::Vec3d rvec, tvec;
   inlier_indices_.clear();
-  const bool ok = cv::solvePnPRansac(object_points_, image_points_, K, cv::noArray(), rvec, tvec, false,
-                                     config.iterations, static_cast<float>(config.reprojection_px),
-                                     config.confidence, inlier_indices_, cv::SOLVEPNP_AP3P);
+  const bool ok =
+      cv::solvePnPRansac(object_points_, image_points_, K, cv::noArray(), rvec, tvec, false,
+                         config.iterations, static_cast<float>(config.reprojection_px),
+                         config.confidence, inlier_indices_, cv::SOLVEPNP_AP3P);
   if (!ok || static_cast<int>(inlier_indices_.size()) < config.min_inliers) return false;
   const Eigen::Vector3d phi(rvec[0], rvec[1], rvec[2]);
   const Eigen::Vector3d t(tvec[0], tvec[1], tvec[2]);

@@ -1,8 +1,7 @@
 #include "vision/orbvo/pose_refiner.h"
 
-#include <cmath>
-
 #include <Eigen/Cholesky>
+#include <cmath>
 
 #include "nav/ekf/so3.h"
 #include "vision/orbvo/stereo_projection.h"
@@ -12,9 +11,11 @@ namespace {
 
 constexpr double kMinDepthM = 1e-3;
 
-// Normal equations of the current inliers; returns the number of residual rows and the cost sum w e^2.
-int accumulate(const StereoRig& rig, const PoseRefinerConfig& config, const PoseObservation* observations, int count,
-               const std::uint8_t* inlier, const CameraPoseEstimate& pose, Eigen::Matrix<double, 6, 6>* H,
+// Normal equations of the current inliers; returns the number of residual rows and the cost sum w
+// e^2.
+int accumulate(const StereoRig& rig, const PoseRefinerConfig& config,
+               const PoseObservation* observations, int count, const std::uint8_t* inlier,
+               const CameraPoseEstimate& pose, Eigen::Matrix<double, 6, 6>* H,
                Eigen::Matrix<double, 6, 1>* g, double* weighted_cost, double* squared_px) {
   H->setZero();
   g->setZero();
@@ -25,9 +26,11 @@ int accumulate(const StereoRig& rig, const PoseRefinerConfig& config, const Pose
   Eigen::Matrix<double, 3, 6> J;
   for (int i = 0; i < count; ++i) {
     if (!inlier[i]) continue;
-    const int m = poseResidual(rig, observations[i], pose.R_cam_world, pose.p_world_in_cam_m, &r, &J);
+    const int m =
+        poseResidual(rig, observations[i], pose.R_cam_world, pose.p_world_in_cam_m, &r, &J);
     if (m == 0) continue;
-    // A left-only observation has r(2) = 0 and a zero third Jacobian row: the full 3 rows are exact.
+    // A left-only observation has r(2) = 0 and a zero third Jacobian row: the full 3 rows are
+    // exact.
     const double e = r.norm();
     const double w = e <= config.huber_k ? 1.0 : config.huber_k / e;
     *H += w * J.transpose() * J;
@@ -41,9 +44,9 @@ int accumulate(const StereoRig& rig, const PoseRefinerConfig& config, const Pose
 
 }  // namespace
 
-int poseResidual(const StereoRig& rig, const PoseObservation& observation, const Eigen::Matrix3d& R_cam_world,
-                 const Eigen::Vector3d& p_world_in_cam_m, Eigen::Vector3d* residual,
-                 Eigen::Matrix<double, 3, 6>* jacobian) {
+int poseResidual(const StereoRig& rig, const PoseObservation& observation,
+                 const Eigen::Matrix3d& R_cam_world, const Eigen::Vector3d& p_world_in_cam_m,
+                 Eigen::Vector3d* residual, Eigen::Matrix<double, 3, 6>* jacobian) {
   const Eigen::Vector3d p_in_cam_m = R_cam_world * observation.p_in_world_m + p_world_in_cam_m;
   if (p_in_cam_m.z() < kMinDepthM) return 0;
   const StereoProjection proj = projectStereo(rig, p_in_cam_m);
@@ -63,8 +66,9 @@ int poseResidual(const StereoRig& rig, const PoseObservation& observation, const
   return 3;
 }
 
-bool refineCameraPose(const StereoRig& rig, const PoseRefinerConfig& config, const PoseObservation* observations,
-                      int count, std::uint8_t* inlier, CameraPoseEstimate* pose) {
+bool refineCameraPose(const StereoRig& rig, const PoseRefinerConfig& config,
+                      const PoseObservation* observations, int count, std::uint8_t* inlier,
+                      CameraPoseEstimate* pose) {
   for (int i = 0; i < count; ++i) inlier[i] = 1;
   Eigen::Matrix<double, 6, 6> H;
   Eigen::Matrix<double, 6, 1> g;
@@ -74,7 +78,9 @@ bool refineCameraPose(const StereoRig& rig, const PoseRefinerConfig& config, con
   Eigen::Matrix<double, 3, 6> J;
   for (int round = 0; round < config.rounds; ++round) {
     for (int it = 0; it < config.iterations; ++it) {
-      if (accumulate(rig, config, observations, count, inlier, *pose, &H, &g, &cost, &squared_px) < 6) return false;
+      if (accumulate(rig, config, observations, count, inlier, *pose, &H, &g, &cost, &squared_px) <
+          6)
+        return false;
       const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> ldlt(H);
       if (ldlt.info() != Eigen::Success || !ldlt.isPositive()) return false;
       const Eigen::Matrix<double, 6, 1> xi = -ldlt.solve(g);
@@ -87,14 +93,16 @@ bool refineCameraPose(const StereoRig& rig, const PoseRefinerConfig& config, con
     // Classify every observation, including those set aside, against its chi-square gate.
     int inliers = 0;
     for (int i = 0; i < count; ++i) {
-      const int m = poseResidual(rig, observations[i], pose->R_cam_world, pose->p_world_in_cam_m, &r, &J);
+      const int m =
+          poseResidual(rig, observations[i], pose->R_cam_world, pose->p_world_in_cam_m, &r, &J);
       const double gate = m == 3 ? config.chi2_stereo : config.chi2_mono;
       inlier[i] = m > 0 && r.squaredNorm() <= gate;
       inliers += inlier[i];
     }
     if (inliers < config.min_inliers) return false;
   }
-  const int rows = accumulate(rig, config, observations, count, inlier, *pose, &H, &g, &cost, &squared_px);
+  const int rows =
+      accumulate(rig, config, observations, count, inlier, *pose, &H, &g, &cost, &squared_px);
   if (rows <= 6) return false;
   const Eigen::LDLT<Eigen::Matrix<double, 6, 6>> ldlt(H);
   if (ldlt.info() != Eigen::Success || !ldlt.isPositive()) return false;
@@ -102,8 +110,8 @@ bool refineCameraPose(const StereoRig& rig, const PoseRefinerConfig& config, con
   for (int i = 0; i < count; ++i) inliers += inlier[i];
   pose->inliers = inliers;
   // The gates keep only the residuals below them: for 2 dof and gate g, E[chi2 | chi2 <= g] / 2 =
-  // (1 - e^(-g/2) (1 + g/2)) / (1 - e^(-g/2)) (0.84 for the 95 % gate), which would shrink s^2 below 1
-  // for a right noise model. Dividing by it keeps the covariance consistent.
+  // (1 - e^(-g/2) (1 + g/2)) / (1 - e^(-g/2)) (0.84 for the 95 % gate), which would shrink s^2
+  // below 1 for a right noise model. Dividing by it keeps the covariance consistent.
   const double tail = std::exp(-0.5 * config.chi2_mono);
   const double truncation = (1.0 - tail * (1.0 + 0.5 * config.chi2_mono)) / (1.0 - tail);
   pose->residual_variance = cost / (rows - 6) / truncation;

@@ -1,7 +1,6 @@
 #pragma once
-#include <cstdint>
-
 #include <Eigen/Core>
+#include <cstdint>
 
 #include "vision/orbvo/stereo_rig.h"
 
@@ -11,8 +10,8 @@ namespace deepnav {
 struct PoseObservation {
   Eigen::Vector3d p_in_world_m = Eigen::Vector3d::Zero();
   Eigen::Vector2d uv_px = Eigen::Vector2d::Zero();  // left pixel
-  double u_right_px = -1.0;                         // right column; < 0 when the corner has no stereo match
-  double sigma_px = 1.0;                            // 1-sigma pixel noise of this corner (its level), > 0
+  double u_right_px = -1.0;  // right column; < 0 when the corner has no stereo match
+  double sigma_px = 1.0;     // 1-sigma pixel noise of this corner (its level), > 0
 };
 
 struct PoseRefinerConfig {
@@ -42,16 +41,17 @@ struct CameraPoseEstimate {
 // observation is classified against its chi-square gate (inlier[i] = 1 or 0); outliers sit out the
 // next round. The covariance is the Gauss-Newton one scaled by the residual variance,
 //   cov_xi = s^2 (J^T W J)^-1,  s^2 = sum w |r|^2 / sigma^2 / (m - 6) / c,  m = residual rows,
-// c < 1 the mean of a chi-square truncated at the gate (the gates drop the tail of the inliers too).
-// Returns false (pose left at its last iterate) when fewer than min_inliers remain or the normal
-// equations are singular. Does not allocate.
-bool refineCameraPose(const StereoRig& rig, const PoseRefinerConfig& config, const PoseObservation* observations,
-                      int count, std::uint8_t* inlier, CameraPoseEstimate* pose);
+// c < 1 the mean of a chi-square truncated at the gate (the gates drop the tail of the inliers
+// too). Returns false (pose left at its last iterate) when fewer than min_inliers remain or the
+// normal equations are singular. Does not allocate.
+bool refineCameraPose(const StereoRig& rig, const PoseRefinerConfig& config,
+                      const PoseObservation* observations, int count, std::uint8_t* inlier,
+                      CameraPoseEstimate* pose);
 
-// Whitened residual of one observation and its 3x6 (or 2x6 without u_r) Jacobian with respect to xi.
-// Returns the number of rows (2 or 3), 0 when the point lies behind the camera.
-int poseResidual(const StereoRig& rig, const PoseObservation& observation, const Eigen::Matrix3d& R_cam_world,
-                 const Eigen::Vector3d& p_world_in_cam_m, Eigen::Vector3d* residual,
-                 Eigen::Matrix<double, 3, 6>* jacobian);
+// Whitened residual of one observation and its 3x6 (or 2x6 without u_r) Jacobian with respect to
+// xi. Returns the number of rows (2 or 3), 0 when the point lies behind the camera.
+int poseResidual(const StereoRig& rig, const PoseObservation& observation,
+                 const Eigen::Matrix3d& R_cam_world, const Eigen::Vector3d& p_world_in_cam_m,
+                 Eigen::Vector3d* residual, Eigen::Matrix<double, 3, 6>* jacobian);
 
 }  // namespace deepnav

@@ -1,10 +1,9 @@
 #pragma once
+#include <Eigen/Core>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "vision/orbvo/feature_grid.h"
 #include "vision/orbvo/orb_feature.h"
@@ -12,9 +11,9 @@
 namespace deepnav {
 
 struct ProjectionSearchConfig {
-  double radius_px = 15.0;       // window half side at level 0; a level-l query searches radius * s^l
-  int max_hamming = 64;          // bits of 256
-  double ratio = 0.9;            // best < ratio * second best inside the window (1: no ratio test)
+  double radius_px = 15.0;  // window half side at level 0; a level-l query searches radius * s^l
+  int max_hamming = 64;     // bits of 256
+  double ratio = 0.9;       // best < ratio * second best inside the window (1: no ratio test)
   int max_level_difference = 1;  // pyramid levels between the query and a candidate
 };
 
@@ -26,10 +25,12 @@ struct ProjectionMatch {
 // Best feature of `features` for a point predicted at uv_px with descriptor `descriptor`, seen at
 // pyramid level `level`: the smallest Hamming distance inside the window, with the gates above.
 // level_scale[l] is the scale of level l. Candidates with available[i] == 0 are skipped.
-inline ProjectionMatch searchNearProjection(const FeatureGrid& grid, const std::vector<OrbFeature>& features,
+inline ProjectionMatch searchNearProjection(const FeatureGrid& grid,
+                                            const std::vector<OrbFeature>& features,
                                             const std::vector<OrbDescriptor>& descriptors,
-                                            const std::vector<std::uint8_t>& available, const double* level_scale,
-                                            const Eigen::Vector2d& uv_px, int level, const OrbDescriptor& descriptor,
+                                            const std::vector<std::uint8_t>& available,
+                                            const double* level_scale, const Eigen::Vector2d& uv_px,
+                                            int level, const OrbDescriptor& descriptor,
                                             const ProjectionSearchConfig& config) {
   const double radius = config.radius_px * level_scale[level];
   int best = std::numeric_limits<int>::max();
@@ -49,7 +50,8 @@ inline ProjectionMatch searchNearProjection(const FeatureGrid& grid, const std::
     }
   });
   if (match.index < 0 || best > config.max_hamming) return ProjectionMatch();
-  if (second != std::numeric_limits<int>::max() && best > config.ratio * second) return ProjectionMatch();
+  if (second != std::numeric_limits<int>::max() && best > config.ratio * second)
+    return ProjectionMatch();
   match.distance = best;
   return match;
 }

@@ -6,7 +6,8 @@
 namespace deepnav {
 namespace {
 
-// splitmix64 (Steele, Lea & Flood 2014): a tiny deterministic generator, the same on every platform.
+// splitmix64 (Steele, Lea & Flood 2014): a tiny deterministic generator, the same on every
+// platform.
 std::uint64_t nextRandom(std::uint64_t* state) {
   std::uint64_t z = (*state += 0x9E3779B97F4A7C15ull);
   z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
@@ -51,8 +52,8 @@ SteeredBrief::SteeredBrief() {
     }
   }
   for (int dy = 0; dy <= kOrientationRadiusPx; ++dy) {
-    disc_half_width_[dy] = static_cast<int>(
-        std::floor(std::sqrt(static_cast<double>(kOrientationRadiusPx * kOrientationRadiusPx - dy * dy))));
+    disc_half_width_[dy] = static_cast<int>(std::floor(
+        std::sqrt(static_cast<double>(kOrientationRadiusPx * kOrientationRadiusPx - dy * dy))));
   }
 }
 
@@ -74,7 +75,8 @@ float SteeredBrief::orientationRad(const cv::Mat& image, int x, int y) const {
   return static_cast<float>(std::atan2(static_cast<double>(m01), static_cast<double>(m10)));
 }
 
-void SteeredBrief::describe(const cv::Mat& smoothed, int x, int y, float angle_rad, OrbDescriptor* out) const {
+void SteeredBrief::describe(const cv::Mat& smoothed, int x, int y, float angle_rad,
+                            OrbDescriptor* out) const {
   constexpr double kBinRad = 2.0 * std::numbers::pi / kAngleBins;
   int bin = static_cast<int>(std::lround(angle_rad / kBinRad)) % kAngleBins;
   if (bin < 0) bin += kAngleBins;

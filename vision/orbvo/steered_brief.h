@@ -1,26 +1,26 @@
 #pragma once
 #include <array>
 #include <cstdint>
-
 #include <opencv2/core.hpp>
 
 #include "vision/orbvo/orb_feature.h"
 
 namespace deepnav {
 
-// Rotated BRIEF (Rublee et al., "ORB: an efficient alternative to SIFT or SURF", ICCV 2011): bit i of
-// the descriptor is I(p_i) < I(q_i) over 256 point pairs of a smoothed patch, the pairs turned by the
-// corner's orientation. Our pairs are drawn once from an isotropic Gaussian of sigma = 31/5 px
-// (Calonder et al., BRIEF, ECCV 2010, sampling G II) with a fixed seed, not ORB's learned set; the
-// rotation is quantised to 32 bins of 11.25 deg and precomputed, as in the ORB paper.
-// Orientation is the intensity centroid (Rosin 1999): theta = atan2(m01, m10) over a disc of radius 15.
+// Rotated BRIEF (Rublee et al., "ORB: an efficient alternative to SIFT or SURF", ICCV 2011): bit i
+// of the descriptor is I(p_i) < I(q_i) over 256 point pairs of a smoothed patch, the pairs turned
+// by the corner's orientation. Our pairs are drawn once from an isotropic Gaussian of sigma = 31/5
+// px (Calonder et al., BRIEF, ECCV 2010, sampling G II) with a fixed seed, not ORB's learned set;
+// the rotation is quantised to 32 bins of 11.25 deg and precomputed, as in the ORB paper.
+// Orientation is the intensity centroid (Rosin 1999): theta = atan2(m01, m10) over a disc of
+// radius 15.
 class SteeredBrief {
  public:
   static constexpr int kBits = 256;
   static constexpr int kAngleBins = 32;
-  static constexpr int kPairRadiusPx = 13;     // every (rotated) sample lies within 14 px
+  static constexpr int kPairRadiusPx = 13;  // every (rotated) sample lies within 14 px
   static constexpr int kOrientationRadiusPx = 15;
-  static constexpr int kBorderPx = 16;         // a corner needs this much image around it
+  static constexpr int kBorderPx = 16;  // a corner needs this much image around it
 
   SteeredBrief();
 

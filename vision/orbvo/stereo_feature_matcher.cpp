@@ -5,14 +5,43 @@
 #include <limits>
 
 namespace deepnav {
+namespace {
 
-bool StereoFeatureMatcher::init(const StereoMatchConfig& config, const StereoRig& rig, int max_features,
-                                double level_scale_factor) {
-  if (config.row_band_px < 0.0 || config.min_depth_m <= 0.0 || config.max_depth_m <= config.min_depth_m ||
-      config.max_hamming < 0 || config.ratio <= 0.0 || config.ratio > 1.0 || config.max_level_difference < 0 ||
-      config.sad_half_window_px < 1 || config.sad_half_window_px > 15 || config.sad_search_px < 1 ||
-      config.sad_search_px > 8 || config.sad_distinct_ratio <= 0.0 || config.sad_distinct_ratio > 1.0 || rig.baseline_m <= 0.0 || rig.fx_px <= 0.0 || rig.height_px < 1 ||
-      max_features < 1 || level_scale_factor < 1.0) {
+// Zero-mean SAD of the (2w+1)^2 windows centred at (ul, vl) of the left and (ur, vr) of the right
+// image (both inside): the two cameras of a housing rarely share gain and vignetting.
+double zeroMeanSad(const cv::Mat& left, const cv::Mat& right, int ul, int vl, int ur, int vr,
+                   int w) {
+  int left_sum = 0;
+  int right_sum = 0;
+  for (int dy = -w; dy <= w; ++dy) {
+    const std::uint8_t* lrow = left.ptr<std::uint8_t>(vl + dy);
+    const std::uint8_t* rrow = right.ptr<std::uint8_t>(vr + dy);
+    for (int dx = -w; dx <= w; ++dx) {
+      left_sum += lrow[ul + dx];
+      right_sum += rrow[ur + dx];
+    }
+  }
+  const double offset = static_cast<double>(left_sum - right_sum) / ((2 * w + 1) * (2 * w + 1));
+  double sad = 0.0;
+  for (int dy = -w; dy <= w; ++dy) {
+    const std::uint8_t* lrow = left.ptr<std::uint8_t>(vl + dy);
+    const std::uint8_t* rrow = right.ptr<std::uint8_t>(vr + dy);
+    for (int dx = -w; dx <= w; ++dx) sad += std::abs(lrow[ul + dx] - rrow[ur + dx] - offset);
+  }
+  return sad;
+}
+
+}  // namespace
+
+bool StereoFeatureMatcher::init(const StereoMatchConfig& config, const StereoRig& rig,
+                                int max_features, double level_scale_factor) {
+  if (config.row_band_px < 0.0 || config.min_depth_m <= 0.0 ||
+      config.max_depth_m <= config.min_depth_m || config.max_hamming < 0 || config.ratio <= 0.0 ||
+      config.ratio > 1.0 || config.max_level_difference < 0 || config.sad_half_window_px < 1 ||
+      config.sad_half_window_px > 15 || config.sad_search_px < 1 || config.sad_search_px > 8 ||
+      config.sad_distinct_ratio <= 0.0 || config.sad_distinct_ratio > 1.0 ||
+      rig.baseline_m <= 0.0 || rig.fx_px <= 0.0 || rig.height_px < 1 || max_features < 1 ||
+      level_scale_factor < 1.0) {
     return false;
   }
   config_ = config;
@@ -49,7 +78,8 @@ void StereoFeatureMatcher::indexRightRows(const std::vector<OrbFeature>& right) 
 
 int StereoFeatureMatcher::bestRightCandidate(const OrbFeature& lf, const OrbDescriptor& ld,
                                              const std::vector<OrbFeature>& right,
-                                             const std::vector<OrbDescriptor>& right_desc, int* distance) const {
+                                             const std::vector<OrbDescriptor>& right_desc,
+                                             int* distance) {
   const double band = config_.row_band_px * std::pow(level_scale_factor_, lf.level);
   const int r0 = std::max(0, static_cast<int>(std::floor(lf.v_px - band)));
   const int r1 = std::min(rig_.height_px - 1, static_cast<int>(std::ceil(lf.v_px + band)));
@@ -61,7 +91,9 @@ int StereoFeatureMatcher::bestRightCandidate(const OrbFeature& lf, const OrbDesc
     const OrbFeature& rf = right[j];
     const double disparity = lf.u_px - rf.u_px;
     if (disparity < min_disparity_px_ - 1.0 || disparity > max_disparity_px_ + 1.0) continue;
-    if (std::abs(rf.v_px - lf.v_px) > band || std::abs(rf.level - lf.level) > config_.max_level_difference) continue;
+    if (std::abs(rf.v_px - lf.v_px) > band ||
+        std::abs(rf.level - lf.level) > config_.max_level_difference)
+      continue;
     const int d = hammingDistance(ld, right_desc[j]);
     if (d < best) {
       second = best;
@@ -71,25 +103,38 @@ int StereoFeatureMatcher::bestRightCandidate(const OrbFeature& lf, const OrbDesc
       second = d;
     }
   }
-  if (best_index < 0 || best > config_.max_hamming) return -1;
-  if (second != std::numeric_limits<int>::max() && best >= config_.ratio * second) return -1;
+  if (best_index < 0) {
+    ++stats_.no_candidate;
+    return -1;
+  }
+  if (best > config_.max_hamming ||
+      (second != std::numeric_limits<int>::max() && best >= config_.ratio * second)) {
+    ++stats_.descriptor;
+    return -1;
+  }
   *distance = best;
   return best_index;
 }
 
 int StereoFeatureMatcher::match(const cv::Mat& left_grey, const cv::Mat& right_grey,
-                                const std::vector<OrbFeature>& left, const std::vector<OrbDescriptor>& left_desc,
-                                const std::vector<OrbFeature>& right, const std::vector<OrbDescriptor>& right_desc,
-                                std::vector<float>* u_right_px, std::vector<Eigen::Vector3d>* p_in_cam_m) {
+                                const std::vector<OrbFeature>& left,
+                                const std::vector<OrbDescriptor>& left_desc,
+                                const std::vector<OrbFeature>& right,
+                                const std::vector<OrbDescriptor>& right_desc,
+                                std::vector<float>* u_right_px,
+                                std::vector<Eigen::Vector3d>* p_in_cam_m) {
   const int n_left = std::min(static_cast<int>(left.size()), static_cast<int>(best_right_.size()));
-  const int n_right = std::min(static_cast<int>(right.size()), static_cast<int>(sorted_right_.size()));
+  const int n_right =
+      std::min(static_cast<int>(right.size()), static_cast<int>(sorted_right_.size()));
+  stats_ = StereoMatchStats();
   u_right_px->assign(left.size(), -1.0f);
   p_in_cam_m->assign(left.size(), Eigen::Vector3d::Zero());
   if (n_left == 0 || n_right == 0) return 0;
   indexRightRows(right);
   std::fill_n(right_owner_.begin(), n_right, -1);
   for (int i = 0; i < n_left; ++i) {
-    best_right_[i] = bestRightCandidate(left[i], left_desc[i], right, right_desc, &best_distance_[i]);
+    best_right_[i] =
+        bestRightCandidate(left[i], left_desc[i], right, right_desc, &best_distance_[i]);
     const int j = best_right_[i];
     if (j < 0) continue;
     if (right_owner_[j] < 0 || best_distance_[i] < owner_distance_[j]) {
@@ -100,11 +145,22 @@ int StereoFeatureMatcher::match(const cv::Mat& left_grey, const cv::Mat& right_g
   int matches = 0;
   for (int i = 0; i < n_left; ++i) {
     const int j = best_right_[i];
-    if (j < 0 || right_owner_[j] != i) continue;
+    if (j < 0) continue;
+    if (right_owner_[j] != i) {
+      ++stats_.duplicate;
+      continue;
+    }
     double u_right = 0.0;
-    if (!refineRightColumn(left_grey, right_grey, left[i].u_px, left[i].v_px, right[j].u_px, &u_right)) continue;
+    if (!refineRightColumn(left_grey, right_grey, left[i].u_px, left[i].v_px, right[j].u_px,
+                           &u_right)) {
+      ++stats_.refinement;
+      continue;
+    }
     const double disparity = left[i].u_px - u_right;
-    if (disparity < min_disparity_px_ || disparity > max_disparity_px_) continue;
+    if (disparity < min_disparity_px_ || disparity > max_disparity_px_) {
+      ++stats_.depth;
+      continue;
+    }
     (*u_right_px)[i] = static_cast<float>(u_right);
     (*p_in_cam_m)[i] = triangulateStereo(rig_, left[i].u_px, left[i].v_px, disparity);
     ++matches;
@@ -112,47 +168,37 @@ int StereoFeatureMatcher::match(const cv::Mat& left_grey, const cv::Mat& right_g
   return matches;
 }
 
-bool StereoFeatureMatcher::refineRightColumn(const cv::Mat& left_grey, const cv::Mat& right_grey, double u_px,
-                                             double v_px, double u_right_guess_px, double* u_right_px) const {
+bool StereoFeatureMatcher::refineRightColumn(const cv::Mat& left_grey, const cv::Mat& right_grey,
+                                             double u_px, double v_px, double u_right_guess_px,
+                                             double* u_right_px) const {
   const int w = config_.sad_half_window_px;
   const int search = config_.sad_search_px;
   const int ul = static_cast<int>(std::lround(u_px));
   const int v = static_cast<int>(std::lround(v_px));
-  const int ur = static_cast<int>(std::lround(u_right_guess_px - (u_px - ul)));  // same shift as the left
-  if (v - w < 0 || v + w >= left_grey.rows || ul - w < 0 || ul + w >= left_grey.cols) return false;
+  // The right window keeps the left one's rounding offset.
+  const int ur = static_cast<int>(std::lround(u_right_guess_px - (u_px - ul)));
+  // The window must fit at rows v-1..v+1 (the row check) and every searched column.
+  if (v - w - 1 < 0 || v + w + 1 >= left_grey.rows || ul - w < 0 || ul + w >= left_grey.cols)
+    return false;
   if (ur - search - w < 0 || ur + search + w >= right_grey.cols) return false;
-  // Zero-mean SAD: the two cameras of a housing rarely share gain and vignetting.
-  int left_sum = 0;
-  for (int dy = -w; dy <= w; ++dy) {
-    const std::uint8_t* row = left_grey.ptr<std::uint8_t>(v + dy);
-    for (int dx = -w; dx <= w; ++dx) left_sum += row[ul + dx];
-  }
-  const int area = (2 * w + 1) * (2 * w + 1);
-  const double left_mean = static_cast<double>(left_sum) / area;
   constexpr int kMaxSearch = 8;
   double cost[2 * kMaxSearch + 1];
   int best_k = -search;
   for (int k = -search; k <= search; ++k) {
-    int right_sum = 0;
-    for (int dy = -w; dy <= w; ++dy) {
-      const std::uint8_t* row = right_grey.ptr<std::uint8_t>(v + dy);
-      for (int dx = -w; dx <= w; ++dx) right_sum += row[ur + k + dx];
-    }
-    const double offset = left_mean - static_cast<double>(right_sum) / area;
-    double sad = 0.0;
-    for (int dy = -w; dy <= w; ++dy) {
-      const std::uint8_t* lrow = left_grey.ptr<std::uint8_t>(v + dy);
-      const std::uint8_t* rrow = right_grey.ptr<std::uint8_t>(v + dy);
-      for (int dx = -w; dx <= w; ++dx) sad += std::abs(lrow[ul + dx] - rrow[ur + k + dx] - offset);
-    }
-    cost[k + search] = sad;
-    if (k > -search && sad < cost[best_k + search]) best_k = k;
+    cost[k + search] = zeroMeanSad(left_grey, right_grey, ul, v, ur + k, v, w);
+    if (cost[k + search] < cost[best_k + search]) best_k = k;
   }
   if (best_k == -search || best_k == search) return false;
-  // A true match stands out of its neighbourhood; a flat or repetitive row does not.
-  if (cost[best_k + search] > config_.sad_distinct_ratio * std::min(cost[0], cost[2 * search])) return false;
-  const double c_minus = cost[best_k + search - 1];
   const double c0 = cost[best_k + search];
+  // A true match stands out of its neighbourhood; a flat or repetitive row does not.
+  if (c0 > config_.sad_distinct_ratio * std::min(cost[0], cost[2 * search])) return false;
+  // Rectified rows: the right window one row up or down must fit worse (a corner matched on the
+  // wrong row fits better towards its true row).
+  if (zeroMeanSad(left_grey, right_grey, ul, v, ur + best_k, v - 1, w) <= c0 ||
+      zeroMeanSad(left_grey, right_grey, ul, v, ur + best_k, v + 1, w) <= c0) {
+    return false;
+  }
+  const double c_minus = cost[best_k + search - 1];
   const double c_plus = cost[best_k + search + 1];
   const double curvature = c_minus - 2.0 * c0 + c_plus;
   if (curvature <= 1e-9) return false;

@@ -9,8 +9,8 @@ namespace deepnav {
 //   u = fx x / z + cx,   v = fy y / z + cy,   u_r = fx (x - b) / z + cx
 // and its Jacobian with respect to the point. Rows 0..1 are the left pixel, row 2 the right column.
 struct StereoProjection {
-  Eigen::Vector3d uvr_px;             // (u, v, u_r)
-  Eigen::Matrix3d d_uvr_d_p;          // d(u, v, u_r) / d(x, y, z)
+  Eigen::Vector3d uvr_px;     // (u, v, u_r)
+  Eigen::Matrix3d d_uvr_d_p;  // d(u, v, u_r) / d(x, y, z)
 };
 
 inline StereoProjection projectStereo(const StereoRig& rig, const Eigen::Vector3d& p_in_cam_m) {

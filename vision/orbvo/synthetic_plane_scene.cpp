@@ -3,10 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <utility>
 #include <numbers>
-
 #include <opencv2/imgproc.hpp>
+#include <utility>
 
 namespace deepnav {
 
@@ -42,7 +41,8 @@ cv::Mat makeSyntheticTexture(int width_px, int height_px, std::uint64_t seed, do
     if (rng.uniform(0, 2) == 0) {
       cv::circle(sum, centre, size, cv::Scalar(level), cv::FILLED, cv::LINE_AA);
     } else {
-      cv::rectangle(sum, cv::Rect(centre.x, centre.y, size, rng.uniform(4, 28)), cv::Scalar(level), cv::FILLED);
+      cv::rectangle(sum, cv::Rect(centre.x, centre.y, size, rng.uniform(4, 28)), cv::Scalar(level),
+                    cv::FILLED);
     }
   }
   cv::Mat texture;
@@ -51,27 +51,28 @@ cv::Mat makeSyntheticTexture(int width_px, int height_px, std::uint64_t seed, do
 }
 
 void SyntheticPlaneScene::render(const StereoRig& rig, const Eigen::Quaterniond& q_world_cam,
-                                 const Eigen::Vector3d& p_cam_in_world_m, std::uint8_t background, cv::Mat* left,
-                                 cv::Mat* right) const {
+                                 const Eigen::Vector3d& p_cam_in_world_m, std::uint8_t background,
+                                 cv::Mat* left, cv::Mat* right) const {
   const Eigen::Matrix3d R_cam_world = q_world_cam.toRotationMatrix().transpose();
   const Eigen::Vector3d p_world_in_cam_m = -R_cam_world * p_cam_in_world_m;
   renderView(rig, R_cam_world, p_world_in_cam_m, background, left);
   // The right camera sits at +baseline along x of the left one.
-  renderView(rig, R_cam_world, p_world_in_cam_m - Eigen::Vector3d(rig.baseline_m, 0.0, 0.0), background, right);
+  renderView(rig, R_cam_world, p_world_in_cam_m - Eigen::Vector3d(rig.baseline_m, 0.0, 0.0),
+             background, right);
 }
 
 void SyntheticPlaneScene::renderView(const StereoRig& rig, const Eigen::Matrix3d& R_cam_world,
-                                     const Eigen::Vector3d& p_world_in_cam_m, std::uint8_t background,
-                                     cv::Mat* image) const {
+                                     const Eigen::Vector3d& p_world_in_cam_m,
+                                     std::uint8_t background, cv::Mat* image) const {
   image->create(rig.height_px, rig.width_px, CV_8UC1);
   image->setTo(cv::Scalar(background));
   // Painter's algorithm: the plane whose centre is farthest is drawn first.
   std::vector<std::pair<double, int>> order;
   for (int i = 0; i < planeCount(); ++i) {
     const TexturedPlane& p = planes_[i];
-    const Eigen::Vector3d centre = p.p_origin_in_world_m + 0.5 * p.texel_m *
-                                                               (p.texture.cols * p.axis_s_in_world +
-                                                                p.texture.rows * p.axis_t_in_world);
+    const Eigen::Vector3d centre =
+        p.p_origin_in_world_m +
+        0.5 * p.texel_m * (p.texture.cols * p.axis_s_in_world + p.texture.rows * p.axis_t_in_world);
     order.emplace_back(-(R_cam_world * centre + p_world_in_cam_m).norm(), i);
   }
   std::sort(order.begin(), order.end());
@@ -86,16 +87,21 @@ void SyntheticPlaneScene::renderView(const StereoRig& rig, const Eigen::Matrix3d
     const Eigen::Matrix3d H = K * A;
     // Warp only the bounding box of the plane's image (planes are in front of the camera).
     double u0 = image->cols, v0 = image->rows, u1 = 0.0, v1 = 0.0;
-    for (const auto& [s, t] : {std::pair{0, 0}, {p.texture.cols, 0}, {0, p.texture.rows}, {p.texture.cols, p.texture.rows}}) {
+    for (const auto& [s, t] : {std::pair{0, 0},
+                               {p.texture.cols, 0},
+                               {0, p.texture.rows},
+                               {p.texture.cols, p.texture.rows}}) {
       const Eigen::Vector3d x = H * Eigen::Vector3d(s, t, 1.0);
       u0 = std::min(u0, x.x() / x.z());
       u1 = std::max(u1, x.x() / x.z());
       v0 = std::min(v0, x.y() / x.z());
       v1 = std::max(v1, x.y() / x.z());
     }
-    const cv::Rect box = cv::Rect(cv::Point(static_cast<int>(std::floor(u0)) - 2, static_cast<int>(std::floor(v0)) - 2),
-                                  cv::Point(static_cast<int>(std::ceil(u1)) + 3, static_cast<int>(std::ceil(v1)) + 3)) &
-                         cv::Rect(0, 0, image->cols, image->rows);
+    const cv::Rect box =
+        cv::Rect(
+            cv::Point(static_cast<int>(std::floor(u0)) - 2, static_cast<int>(std::floor(v0)) - 2),
+            cv::Point(static_cast<int>(std::ceil(u1)) + 3, static_cast<int>(std::ceil(v1)) + 3)) &
+        cv::Rect(0, 0, image->cols, image->rows);
     if (box.empty()) continue;
     Eigen::Matrix3d shift = Eigen::Matrix3d::Identity();
     shift(0, 2) = -box.x;
@@ -122,7 +128,8 @@ SyntheticPlaneScene makeOrbVoTestScene(std::uint64_t seed, double contrast) {
   floor.texel_m = 0.003;
   floor.texture = makeSyntheticTexture(1000, 640, seed + 2, contrast);
   floor.axis_s_in_world = Eigen::Vector3d::UnitX();
-  floor.axis_t_in_world = Eigen::Vector3d(0.0, -0.15, 1.0).normalized();  // rows run away from the camera
+  // Rows run away from the camera
+  floor.axis_t_in_world = Eigen::Vector3d(0.0, -0.15, 1.0).normalized();
   floor.p_origin_in_world_m = {-1.5, 0.5, 1.0};
   scene.addPlane(floor);
 

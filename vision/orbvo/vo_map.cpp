@@ -55,7 +55,8 @@ Keyframe& VoMap::pushKeyframe() {
   return kf;
 }
 
-int VoMap::createPoint(const Eigen::Vector3d& p_in_world_m, const OrbDescriptor& descriptor, int level) {
+int VoMap::createPoint(const Eigen::Vector3d& p_in_world_m, const OrbDescriptor& descriptor,
+                       int level) {
   if (free_points_.empty()) return -1;
   const int id = free_points_.back();
   free_points_.pop_back();

@@ -1,8 +1,7 @@
 #pragma once
+#include <Eigen/Core>
 #include <cstdint>
 #include <vector>
-
-#include <Eigen/Core>
 
 #include "nav/types/time.h"
 #include "vision/orbvo/orb_feature.h"
