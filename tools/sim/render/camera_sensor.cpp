@@ -9,8 +9,6 @@
 namespace deepnav::sim {
 
 namespace {
-constexpr int kToneSize = 65536;
-constexpr float kGamma = 1.0f;
 }  // namespace
 
 bool CameraSensor::init(int width_px, int height_px, int channels, const WaterOptics& optics, std::uint64_t seed) {
@@ -23,11 +21,6 @@ bool CameraSensor::init(int width_px, int height_px, int channels, const WaterOp
   normals_.resize(std::max<std::size_t>(65536, 4 * row));
   NormalRng rng(NormalRng::subSeed(seed, 0x5E5502u));
   for (float& n : normals_) n = static_cast<float>(rng.normal());
-  tone_.resize(kToneSize);
-  for (int i = 0; i < kToneSize; ++i) {
-    const float v = static_cast<float>(i) / (kToneSize - 1);
-    tone_[i] = static_cast<std::uint8_t>(std::lround(255.0f * std::pow(v, kGamma)));
-  }
   return true;
 }
 
@@ -53,7 +46,7 @@ void CameraSensor::expose(const float* radiance, float gain, std::uint64_t frame
       for (int k = 0; k < c; ++k) out[x * c + k] = 0.25f * (in[xl + k] + 2.0f * in[x * c + k] + in[xr + k]);
     }
   }
-  // Vertical [1 2 1] / 4, noise, tone curve.
+  // Vertical [1 2 1] / 4, noise, gain, quantisation.
   const std::uint32_t key_lo = static_cast<std::uint32_t>(frame_key), key_hi = static_cast<std::uint32_t>(frame_key >> 32);
   const std::size_t offsets = normals_.size() - static_cast<std::size_t>(row);
   for (int y = 0; y < height_; ++y) {
@@ -66,7 +59,7 @@ void CameraSensor::expose(const float* radiance, float gain, std::uint64_t frame
       const float signal = 0.25f * (up[i] + 2.0f * mid[i] + down[i]);
       const float noisy = gain * (signal + std::sqrt(read_var_ + shot_ * std::max(signal, 0.0f)) * noise[i]);
       const float clamped = std::min(std::max(noisy, 0.0f), 1.0f);
-      out[i] = tone_[static_cast<int>(clamped * (kToneSize - 1) + 0.5f)];
+      out[i] = static_cast<std::uint8_t>(clamped * 255.0f + 0.5f);
     }
   }
 }

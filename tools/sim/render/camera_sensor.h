@@ -11,7 +11,9 @@ namespace deepnav::sim {
 // From the irradiance on the sensor to the 8-bit image: the lens blur (3 x 3 Gaussian [1 2 1]/4 in
 // each direction, replicated borders) giving I, sensor noise and analog gain g,
 //   S = g (I + sqrt(read^2 + shot I) n),  n ~ N(0, 1),
-// then the camera's tone curve 255 clamp(S, 0, 1)^(1/2.2), rounded. Noise values come from a table of
+// then 8 bits: round(255 clamp(S, 0, 1)). Linear, as machine-vision cameras are by default: a gamma
+// curve after the blur moves the apparent edges of black-on-white markers by about half a pixel
+// towards the black (measured with cv::aruco corners), a bias navigation would inherit. Noise values come from a table of
 // normals drawn from the seed, read from an offset hashed from (frame key, row): deterministic, no
 // random generator in the per-frame path. Buffers are allocated in init().
 class CameraSensor {
@@ -34,7 +36,6 @@ class CameraSensor {
   float read_var_ = 0.0f, shot_ = 0.0f;
   std::vector<float> blurred_rows_;  // the horizontal pass
   std::vector<float> normals_;       // N(0, 1) table
-  std::vector<std::uint8_t> tone_;   // 65536-entry tone curve over [0, 1]
 };
 
 }  // namespace deepnav::sim

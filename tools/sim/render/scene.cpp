@@ -143,29 +143,4 @@ bool Scene::intersect(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float 
   return found;
 }
 
-Eigen::Vector3f Scene::normalAt(const SceneHit& hit, const Eigen::Vector3f& o, const Eigen::Vector3f& d) const {
-  if (hit.primitive == kSeabed) {
-    const Eigen::Vector3f p = o + hit.t * d;
-    return seabed_.normalAt(p.x(), p.y());
-  }
-  return primitives_[hit.primitive].R_panel_local * hit.local.n;
-}
-
-Eigen::Vector3f Scene::albedoAt(const SceneHit& hit, const Eigen::Vector3f& o, const Eigen::Vector3f& d,
-                                float footprint_m) const {
-  if (hit.primitive == kSeabed) {
-    const Eigen::Vector3f p = o + hit.t * d;
-    return seabed_.albedoAt(p.x(), p.y(), footprint_m);
-  }
-  const Primitive& prim = primitives_[hit.primitive];
-  const Material& m = materials_[prim.material];
-  const Eigen::Vector3f& p = hit.local.p;
-  if (m.kind == MaterialKind::kSolid) return m.albedo_bgr;
-  if (hit.local.back) return m.back_albedo_bgr;
-  const float u = m.kind == MaterialKind::kRectTexture ? (p.x() - m.u0_m) * m.texels_per_m
-                                                       : std::atan2(p.y(), p.x()) * prim.hi.x() * m.texels_per_m;
-  const float v = (m.v0_m - (m.kind == MaterialKind::kRectTexture ? p.y() : p.z())) * m.texels_per_m;
-  return textures_[m.texture].sample(u, v, footprint_m * m.texels_per_m);
-}
-
 }  // namespace deepnav::sim

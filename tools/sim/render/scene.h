@@ -1,4 +1,5 @@
 #pragma once
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -51,9 +52,10 @@ class Scene {
                  SceneHit* hit) const;
   // Unit normal in P at a hit (turned towards the ray, except on the seabed: up).
   Eigen::Vector3f normalAt(const SceneHit& hit, const Eigen::Vector3f& o, const Eigen::Vector3f& d) const;
-  // Albedo (BGR) at a hit; footprint_m is the size of a pixel there, to choose the texture level.
+  // Albedo (BGR) at a hit; footprint2_m2 is the squared size of a pixel there, to choose the texture
+  // level.
   Eigen::Vector3f albedoAt(const SceneHit& hit, const Eigen::Vector3f& o, const Eigen::Vector3f& d,
-                           float footprint_m) const;
+                           float footprint2_m2) const;
 
  private:
   bool buildPanel(const Scenario& scenario, const PanelDescription& panel, double quiet_zone_m, std::uint32_t seed,
@@ -68,5 +70,31 @@ class Scene {
   int first_fish_ = 0;
   Eigen::Isometry3d T_odom_panel_ = Eigen::Isometry3d::Identity();
 };
+
+// Inline: called once per pixel.
+inline Eigen::Vector3f Scene::normalAt(const SceneHit& hit, const Eigen::Vector3f& o, const Eigen::Vector3f& d) const {
+  if (hit.primitive == kSeabed) {
+    const Eigen::Vector3f p = o + hit.t * d;
+    return seabed_.normalAt(p.x(), p.y());
+  }
+  return primitives_[hit.primitive].R_panel_local * hit.local.n;
+}
+
+inline Eigen::Vector3f Scene::albedoAt(const SceneHit& hit, const Eigen::Vector3f& o, const Eigen::Vector3f& d,
+                                float footprint2_m2) const {
+  if (hit.primitive == kSeabed) {
+    const Eigen::Vector3f p = o + hit.t * d;
+    return seabed_.albedoAt(p.x(), p.y(), footprint2_m2);
+  }
+  const Primitive& prim = primitives_[hit.primitive];
+  const Material& m = materials_[prim.material];
+  const Eigen::Vector3f& p = hit.local.p;
+  if (m.kind == MaterialKind::kSolid) return m.albedo_bgr;
+  if (hit.local.back) return m.back_albedo_bgr;
+  const float u = m.kind == MaterialKind::kRectTexture ? (p.x() - m.u0_m) * m.texels_per_m
+                                                       : std::atan2(p.y(), p.x()) * prim.hi.x() * m.texels_per_m;
+  const float v = (m.v0_m - (m.kind == MaterialKind::kRectTexture ? p.y() : p.z())) * m.texels_per_m;
+  return textures_[m.texture].sample(u, v, footprint2_m2 * m.texels_per_m * m.texels_per_m);
+}
 
 }  // namespace deepnav::sim

@@ -1,4 +1,6 @@
 #pragma once
+#include <algorithm>
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -20,16 +22,58 @@ class TextureMap {
   // Box-filtered levels down to about 8 texels.
   void buildMips();
 
-  // Albedo at level-0 texel coordinates (u, v) for a pixel covering footprint_texels level-0 texels.
-  Eigen::Vector3f sample(float u, float v, float footprint_texels) const;
+  // Albedo at level-0 texel coordinates (u, v) for a pixel covering a square of footprint2_texels
+  // (level-0 texels, squared side): level floor(log2(side)), clamped.
+  Eigen::Vector3f sample(float u, float v, float footprint2_texels) const {
+    int level = 0;
+    const int last = static_cast<int>(levels_.size()) - 1;
+    while (footprint2_texels >= 4.0f && level < last) {
+      footprint2_texels *= 0.25f;
+      ++level;
+    }
+    return sampleLevel(level, u, v);
+  }
+  inline Eigen::Vector3f sampleLevel(int level, float u, float v) const;
   int levels() const { return static_cast<int>(levels_.size()); }
 
  private:
-  Eigen::Vector3f sampleLevel(int level, float u, float v) const;
 
+  struct Level {  // raw view of one level for the sampler
+    const std::uint8_t* data;
+    std::size_t step;
+    int cols, rows;
+    float scale;
+  };
   std::vector<cv::Mat> levels_;
+  std::vector<Level> view_;
   std::vector<float> scale_;  // level-L texels per level-0 texel (both axes; sizes halve exactly or clamp)
   bool wrap_ = false;
 };
+
+inline Eigen::Vector3f TextureMap::sampleLevel(int level, float u, float v) const {
+  const Level& L = view_[level];
+  const float x = u * L.scale - 0.5f, y = v * L.scale - 0.5f;
+  // floor without a libm call (no SSE4.1 rounding in the x86-64 baseline): truncate, then fix negatives.
+  int x0 = static_cast<int>(x), y0 = static_cast<int>(y);
+  x0 -= x < static_cast<float>(x0);
+  y0 -= y < static_cast<float>(y0);
+  const float ax = x - static_cast<float>(x0), ay = y - static_cast<float>(y0);
+  int x1 = x0 + 1, y1 = y0 + 1;
+  if (wrap_) {
+    x0 &= L.cols - 1, x1 &= L.cols - 1, y0 &= L.rows - 1, y1 &= L.rows - 1;
+  } else {
+    x0 = std::clamp(x0, 0, L.cols - 1), x1 = std::clamp(x1, 0, L.cols - 1);
+    y0 = std::clamp(y0, 0, L.rows - 1), y1 = std::clamp(y1, 0, L.rows - 1);
+  }
+  const std::uint8_t* r0 = L.data + static_cast<std::ptrdiff_t>(y0) * L.step;
+  const std::uint8_t* r1 = L.data + static_cast<std::ptrdiff_t>(y1) * L.step;
+  const float w00 = (1.0f - ax) * (1.0f - ay), w10 = ax * (1.0f - ay);
+  const float w01 = (1.0f - ax) * ay, w11 = ax * ay;
+  const std::uint8_t *a = r0 + 3 * x0, *b = r0 + 3 * x1, *c = r1 + 3 * x0, *d = r1 + 3 * x1;
+  constexpr float k = 1.0f / 255.0f;
+  return Eigen::Vector3f(w00 * a[0] + w10 * b[0] + w01 * c[0] + w11 * d[0],
+                         w00 * a[1] + w10 * b[1] + w01 * c[1] + w11 * d[1],
+                         w00 * a[2] + w10 * b[2] + w01 * c[2] + w11 * d[2]) * k;
+}
 
 }  // namespace deepnav::sim

@@ -16,6 +16,7 @@ bool ViewRenderer::init(const CameraConfig& camera, int channels, const WaterOpt
     return false;
   }
   camera_ = camera;
+  inv_fx_ = static_cast<float>(1.0 / camera.fx_px);
   channels_ = channels;
   scene_ = scene;
   optics_ = optics;
@@ -32,6 +33,8 @@ bool ViewRenderer::init(const CameraConfig& camera, int channels, const WaterOpt
 void ViewRenderer::render(const ViewPose& pose, const LampSet& lamps, float* radiance, float* depth_m) {
   const auto& prims = scene_->primitives();
   origin_ = pose.p_cam_in_panel_m;
+  const float relief_top_m = scene_->seabed().maxHeight_m();
+  seabed_top_m_ = origin_.z() > relief_top_m ? relief_top_m : INFINITY;
   for (std::size_t i = 0; i < prims.size(); ++i) {
     origin_local_[i] = prims[i].R_local_panel * (origin_ - prims[i].p_local_in_panel_m);
     near_m_[i] = std::max(0.0f, (prims[i].bound_centre_in_panel_m - origin_).norm() - prims[i].bound_radius_m);
@@ -81,8 +84,9 @@ void ViewRenderer::listCandidates(const Cone& cone) {
     }
     if (!inside) continue;
     // Insertion keeps the list nearest first.
-    candidates_.push_back(i);
-    for (int k = static_cast<int>(candidates_.size()) - 1; k > 0 && near_m_[candidates_[k - 1]] > near_m_[i]; --k)
+    const Eigen::Matrix3f& R = prims[i].R_local_panel;
+    candidates_.push_back({i, near_m_[i], R * ray_base_, R * ray_du_, R * ray_dv_});
+    for (int k = static_cast<int>(candidates_.size()) - 1; k > 0 && candidates_[k - 1].near_m > near_m_[i]; --k)
       std::swap(candidates_[k - 1], candidates_[k]);
   }
 }
@@ -104,18 +108,20 @@ void ViewRenderer::renderTile(int u0, int v0, int u1, int v1, const LampSet& lam
       const Eigen::Vector3f d = ray_base_ + static_cast<float>(u) * ray_du_ + static_cast<float>(v) * ray_dv_;
       float t_best = kMaxRange_m * inv_len;
       hit.primitive = -2;
+      const float uf = static_cast<float>(u), vf = static_cast<float>(v);
       for (int k = 0; k < count; ++k) {
-        const int i = candidates_[k];
-        if (near_m_[i] * inv_len >= t_best) break;
-        const Primitive& p = prims[i];
-        if (intersectPrimitive(origin_local_[i], p.R_local_panel * d, p, kTMin, t_best, &local)) {
+        const Candidate& c = candidates_[k];
+        if (c.near_m * inv_len >= t_best) break;
+        const Eigen::Vector3f d_local = c.base + uf * c.du + vf * c.dv;
+        if (intersectPrimitive(origin_local_[c.primitive], d_local, prims[c.primitive], kTMin, t_best, &local)) {
           t_best = local.t;
-          hit.primitive = i;
+          hit.primitive = c.primitive;
           hit.local = local;
         }
       }
+      // The seabed lies below its max height: a ray still above it at t_best cannot meet it before.
       float t_seabed = 0.0f;
-      if (scene_->seabed().intersect(origin_, d, kTMin, t_best, &t_seabed)) {
+      if (origin_.z() + t_best * d.z() <= seabed_top_m_ && scene_->seabed().intersect(origin_, d, kTMin, t_best, &t_seabed)) {
         t_best = t_seabed;
         hit.primitive = Scene::kSeabed;
       }
@@ -144,20 +150,21 @@ Eigen::Vector3f ViewRenderer::shade(const SceneHit& hit, const Eigen::Vector3f& 
   const float distance = hit.t * ray_length;
   const Eigen::Vector3f p = origin_ + hit.t * d;
   const Eigen::Vector3f n = scene_->normalAt(hit, origin_, d);
-  // A pixel's footprint at the hit, widened for oblique views (geometric mean of the two axes).
-  const float cos_view = std::abs(n.dot(d)) / ray_length;
-  const float footprint_m = hit.t / static_cast<float>(camera_.fx_px) / std::sqrt(std::max(cos_view, 0.1f));
-  const Eigen::Vector3f albedo = scene_->albedoAt(hit, origin_, d, footprint_m);
+  // A pixel's footprint at the hit, widened for oblique views: fronto / sqrt(cos), the geometric mean
+  // of its two axes (texture level choice only, so the square root is left to the comparison).
+  const float fronto_m = hit.t * inv_fx_;
+  const float cos_view = std::max(std::abs(n.dot(d)) / ray_length, 0.1f);
+  const Eigen::Vector3f albedo = scene_->albedoAt(hit, origin_, d, fronto_m * fronto_m / cos_view);
   Eigen::Vector3f E = Eigen::Vector3f::Zero();
   for (const Eigen::Vector3f& lamp : lamps.p_lamp_in_panel_m) {
     const Eigen::Vector3f l = lamp - p;
+    const float n_l = n.dot(l), axis_l = -lamps.axis_in_panel.dot(l);
+    if (n_l <= 0.0f || axis_l <= 0.0f) continue;
     const float dl2 = l.squaredNorm();
-    const float inv_dl = 1.0f / std::sqrt(dl2);
-    const float cos_surface = n.dot(l) * inv_dl;
-    const float cos_beam = -lamps.axis_in_panel.dot(l) * inv_dl;
-    if (cos_surface <= 0.0f || cos_beam <= 0.0f) continue;
-    const float irradiance = optics_.lamp_intensity * cos_surface * cos_beam / dl2;
-    E += irradiance * water_.transmittance(dl2 * inv_dl + distance);
+    const float dl = std::sqrt(dl2);
+    // I cos(theta_s) cos(phi) / d_l^2 with both cosines = dot / d_l.
+    const float irradiance = optics_.lamp_intensity * n_l * axis_l / (dl2 * dl2);
+    E += irradiance * water_.transmittance(dl + distance);
   }
   const Eigen::Vector3f veil = Eigen::Vector3f::Ones() - water_.transmittance(distance);
   return albedo.cwiseProduct(E) + backscatter_.cwiseProduct(veil);

@@ -54,6 +54,7 @@ class ViewRenderer {
   Eigen::Vector3f shade(const SceneHit& hit, const Eigen::Vector3f& d, float ray_length, const LampSet& lamps) const;
 
   CameraConfig camera_;
+  float inv_fx_ = 1.0f;
   int channels_ = 1;
   const Scene* scene_ = nullptr;
   WaterOptics optics_;
@@ -61,10 +62,18 @@ class ViewRenderer {
   Eigen::Vector3f backscatter_ = Eigen::Vector3f::Zero();
   // Per frame.
   Eigen::Vector3f origin_ = Eigen::Vector3f::Zero();
+  float seabed_top_m_ = 0.0f;  // a ray from above the relief still above it at its hit never met it
   Eigen::Vector3f ray_base_, ray_du_, ray_dv_;  // d(u, v) = base + u du + v dv
   std::vector<Eigen::Vector3f> origin_local_;     // per primitive
   std::vector<float> near_m_;                     // per primitive: distance to its bounding sphere
-  std::vector<int> candidates_;                   // per tile, nearest first
+  // Per tile, nearest first: the primitive and its local ray direction d(u, v) = base + u du + v dv
+  // (the camera ray's linear map taken into the primitive's frame once per tile).
+  struct Candidate {
+    int primitive;
+    float near_m;
+    Eigen::Vector3f base, du, dv;
+  };
+  std::vector<Candidate> candidates_;
 };
 
 }  // namespace deepnav::sim
