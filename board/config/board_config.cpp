@@ -63,6 +63,44 @@ const std::array kBoardParams = {
       DEEPNAV_FIELD(camera.channels)},
     P{"camera.rate_hz", ParamType::kDouble, "Hz", 0.1, 100, "10", "", "stereo pair rate",
       DEEPNAV_FIELD(camera.rate_hz)},
+    P{"camera.fx_px", ParamType::kDouble, "px", 1, 100000, "700", "", "focal length along x (rectified)",
+      DEEPNAV_FIELD(camera.fx_px)},
+    P{"camera.fy_px", ParamType::kDouble, "px", 1, 100000, "700", "", "focal length along y (rectified)",
+      DEEPNAV_FIELD(camera.fy_px)},
+    P{"camera.cx_px", ParamType::kDouble, "px", 0, 8192, "343.5", "", "principal point x", DEEPNAV_FIELD(camera.cx_px)},
+    P{"camera.cy_px", ParamType::kDouble, "px", 0, 8192, "257.5", "", "principal point y", DEEPNAV_FIELD(camera.cy_px)},
+    P{"camera.baseline_m", ParamType::kDouble, "m", 0.01, 5, "0.30", "", "stereo baseline (right camera along +x)",
+      DEEPNAV_FIELD(camera.baseline_m)},
+    P{"camera.p_cam_in_robot_m", ParamType::kVec3, "m", -10, 10, "[0.6, 0.15, -0.2]", "",
+      "left camera optical centre in the robot frame", DEEPNAV_FIELD(camera.p_cam_in_robot_m)},
+    P{"camera.rotation_deg", ParamType::kRotation, "deg", -360, 360, "[0, 0, 0]", "",
+      "mounting of the camera body (FLU, optical axis = body x) in the robot frame, [roll, pitch, yaw]",
+      DEEPNAV_FIELD(camera.q_robot_body)},
+    P{"markers.panel_file", ParamType::kString, "path", 0, 0, "''", "",
+      "panel description (knowledge base), relative to the board file; empty: no markers",
+      DEEPNAV_FIELD(markers.panel_file)},
+    P{"markers.panel_min_observations", ParamType::kInt, "-", 1, 100000, "30", "",
+      "marker observations before the panel pose can be fixed", DEEPNAV_FIELD(markers.panel_min_observations)},
+    P{"markers.panel_min_distinct_markers", ParamType::kInt, "-", 1, 4096, "2", "",
+      "distinct markers before the panel pose can be fixed", DEEPNAV_FIELD(markers.panel_min_distinct_markers)},
+    P{"markers.panel_max_position_std_m", ParamType::kDouble, "m", 0.001, 10, "0.05", "",
+      "position scatter below which the panel pose is fixed", DEEPNAV_FIELD(markers.panel_max_position_std_m)},
+    P{"markers.panel_max_angle_std_rad", ParamType::kDouble, "rad", 0.0001, 1, "0.035", "",
+      "rotation scatter below which the panel pose is fixed", DEEPNAV_FIELD(markers.panel_max_angle_std_rad)},
+    P{"markers.max_distance_m", ParamType::kDouble, "m", 0.1, 50, "4.0", "",
+      "markers farther than this are not used for the panel pose", DEEPNAV_FIELD(markers.max_distance_m)},
+    P{"markers.pos_floor_m", ParamType::kDouble, "m", 0, 1, "0.01", "",
+      "marker pose position 1-sigma at zero distance", DEEPNAV_FIELD(markers.pos_floor_m)},
+    P{"markers.pos_per_d2_per_m", ParamType::kDouble, "1/m", 0, 1, "0.01", "",
+      "growth of the position 1-sigma with the squared distance", DEEPNAV_FIELD(markers.pos_per_d2_per_m)},
+    P{"markers.rot_floor_rad", ParamType::kDouble, "rad", 0, 1, "0.0087", "",
+      "marker pose rotation 1-sigma at zero distance", DEEPNAV_FIELD(markers.rot_floor_rad)},
+    P{"markers.rot_per_d_rad_per_m", ParamType::kDouble, "rad/m", 0, 1, "0.0087", "",
+      "growth of the rotation 1-sigma with distance", DEEPNAV_FIELD(markers.rot_per_d_rad_per_m)},
+    P{"stage.min_workspace_time_s", ParamType::kDouble, "s", 0, 86400, "30", "",
+      "time in stage 1 (workspace definition) before stage 2", DEEPNAV_FIELD(stage.min_workspace_time_s)},
+    P{"stage.min_faces_seen_fraction", ParamType::kDouble, "-", 0, 1, "0.5", "",
+      "fraction of the panel faces seen in stage 1 before stage 2", DEEPNAV_FIELD(stage.min_faces_seen_fraction)},
     P{"ekf.gravity_mps2", ParamType::kDouble, "m/s^2", 9.7, 9.9, "9.80665", "", "local gravity magnitude",
       DEEPNAV_FIELD(ekf.gravity_mps2)},
     P{"ekf.imu_rotation_deg", ParamType::kRotation, "deg", -180, 180, "[0, 0, 0]", "", "mounting rotation IMU -> robot, [roll, pitch, yaw]",
@@ -140,8 +178,14 @@ const std::array kBoardParams = {
 BoardConfig defaultBoardConfig() {
   BoardConfig config{};
   std::string error;
+  // Every default is valid by construction (BoardConfig.DeclaredDefaultsAreAllValid checks it).
   applyDefaults(bindParams(kBoardParams, config), &error);
   return config;
+}
+
+bool checkBoardDefaults(std::string* error) {
+  BoardConfig config{};
+  return applyDefaults(bindParams(kBoardParams, config), error) && validateEkfConfig(config.ekf, error);
 }
 
 bool loadBoardConfigText(const std::string& text, const std::string& name, BoardConfig* config,

@@ -6,6 +6,8 @@
 #include "board/config/param_table.h"
 #include "nav/ekf/ekf_config.h"
 
+#include <Eigen/Geometry>
+
 namespace deepnav {
 
 // Everything one vehicle's board.yaml sets. Each field is declared once, with unit, default and range,
@@ -41,7 +43,30 @@ struct BoardConfig {
     int height_px;
     int channels;
     double rate_hz;
+    double fx_px;              // rectified pinhole intrinsics of the left camera
+    double fy_px;
+    double cx_px;
+    double cy_px;
+    double baseline_m;
+    Eigen::Vector3d p_cam_in_robot_m;  // left camera optical centre in the robot frame
+    Eigen::Quaterniond q_robot_body;   // mounting of the FLU camera body (optical z = body x)
   } camera;
+  struct Markers {
+    std::string panel_file;     // panel description (knowledge base); empty: no markers
+    int panel_min_observations;
+    int panel_min_distinct_markers;
+    double panel_max_position_std_m;
+    double panel_max_angle_std_rad;
+    double max_distance_m;
+    double pos_floor_m;
+    double pos_per_d2_per_m;
+    double rot_floor_rad;
+    double rot_per_d_rad_per_m;
+  } markers;
+  struct Stage {
+    double min_workspace_time_s;
+    double min_faces_seen_fraction;
+  } stage;
   EkfConfig ekf;  // navigation filter: mounting, noise, gates, timeouts, delayed-fusion window
 };
 
@@ -56,6 +81,9 @@ bool loadBoardConfigText(const std::string& text, const std::string& name, Board
 
 // The built-in defaults (what an empty board.yaml gives).
 BoardConfig defaultBoardConfig();
+
+// True when every declared default parses and lies in its range (a test guards the table).
+bool checkBoardDefaults(std::string* error);
 
 // Markdown table of every board parameter (unit, default, range, meaning).
 std::string describeBoardParams();

@@ -8,8 +8,8 @@
 
 namespace deepnav {
 
-bool LiveLoop::init(const BoardConfig& c, const std::string& board_text, const std::string& recording_path,
-                    std::string* error) {
+bool LiveLoop::init(const VehicleSetup& setup, const std::string& recording_path, std::string* error) {
+  const BoardConfig& c = setup.config;
   config_ = c;
   LiveInputCapacities caps;
   caps.imu = static_cast<std::size_t>(c.buffers.imu);
@@ -34,21 +34,18 @@ bool LiveLoop::init(const BoardConfig& c, const std::string& board_text, const s
   nav_task_ = scheduler_.findTask("nav");
   stats_task_ = scheduler_.findTask("stats");
   vision_task_ = scheduler_.findTask("vision");
-  VisionPipelineConfig vc;
-  vc.width_px = c.camera.width_px;
-  vc.height_px = c.camera.height_px;
-  if (!vision_.init(vc, error)) return false;
+  if (!vision_.init(visionConfig(setup), error)) return false;
   recording_ = !recording_path.empty() && c.recording.enabled;
   sink_ = nullptr;
   if (recording_) {
-    if (!recorder_.start(recording_path, recordingOptions(c), {{"deepnav.board", {{"yaml", board_text}}}},
+    if (!recorder_.start(recording_path, recordingOptions(c), recordingMetadata(setup),
                          static_cast<std::size_t>(c.buffers.record), static_cast<std::size_t>(c.buffers.frames),
                          &inputs_.pool, error)) {
       return false;
     }
     sink_ = &recorder_;
   }
-  return core_.init(c, sink_, error);
+  return core_.init(setup, sink_, error);
 }
 
 bool LiveLoop::start(TimeUs clock_offset_us, std::string* error) {

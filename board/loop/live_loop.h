@@ -26,8 +26,7 @@ class LiveLoop {
   LiveLoop& operator=(const LiveLoop&) = delete;
 
   // recording_path empty: no recording.
-  bool init(const BoardConfig& config, const std::string& board_text, const std::string& recording_path,
-            std::string* error);
+  bool init(const VehicleSetup& setup, const std::string& recording_path, std::string* error);
   LiveInputs& inputs() { return inputs_; }
 
   // Starts the threads. The loop's clock is t_us = monotonicUs() + clock_offset_us (0 on the vehicle; a

@@ -2,12 +2,43 @@
 
 namespace deepnav {
 
-bool NavCore::init(const BoardConfig& config, RecordSink* sink, std::string* error) {
+namespace {
+
+PanelPoseConfig panelPoseConfig(const BoardConfig& c) {
+  PanelPoseConfig p;
+  p.min_observations = c.markers.panel_min_observations;
+  p.min_distinct_markers = c.markers.panel_min_distinct_markers;
+  p.max_position_std_m = c.markers.panel_max_position_std_m;
+  p.max_angle_std_rad = c.markers.panel_max_angle_std_rad;
+  p.max_distance_m = c.markers.max_distance_m;
+  return p;
+}
+
+MarkerCovarianceConfig markerCovarianceConfig(const BoardConfig& c) {
+  MarkerCovarianceConfig m;
+  m.pos_floor_m = c.markers.pos_floor_m;
+  m.pos_per_d2_per_m = c.markers.pos_per_d2_per_m;
+  m.rot_floor_rad = c.markers.rot_floor_rad;
+  m.rot_per_d_rad_per_m = c.markers.rot_per_d_rad_per_m;
+  return m;
+}
+
+}  // namespace
+
+bool NavCore::init(const VehicleSetup& setup, RecordSink* sink, std::string* error) {
   sink_ = sink;
   counters_ = InputCounters{};
   image_quality_ = -1.0;
   solution_ = NavSolution{};
-  return ekf_.init(config.ekf, error);
+  poses_.clear();
+  has_panel_ = setup.has_panel;
+  const BoardConfig& c = setup.config;
+  StageConfig stage;
+  stage.min_workspace_time_s = c.stage.min_workspace_time_s;
+  stage.min_faces_seen_fraction = c.stage.min_faces_seen_fraction;
+  if (!stage_.init(stage, error) || !ekf_.init(c.ekf, error)) return false;
+  return !has_panel_ || markers_.init(setup.panel, robotFromCamera(c), panelPoseConfig(c),
+                                      markerCovarianceConfig(c), error);
 }
 
 void NavCore::count(FuseResult r) {
@@ -24,6 +55,7 @@ void NavCore::count(FuseResult r) {
 void NavCore::consumeVision(const VisionResult& v) {
   ++counters_.vision;
   if (v.frame_ok && v.image_quality >= 0.0) image_quality_ = v.image_quality;
+  if (has_panel_) markers_.onVision(v, poses_, &ekf_);
 }
 
 void NavCore::consume(const InputSample& sample) {
@@ -57,10 +89,18 @@ void NavCore::consume(const InputSample& sample) {
 
 const NavSolution& NavCore::tick(TimeUs t_us) {
   solution_ = ekf_.solution(t_us);
+  if (ekf_.aligned()) poses_.push(solution_.t_us, solution_.p_robot_in_odom_m, solution_.q_odom_robot);
   // The solution is stamped with the tick; the filter state it holds is that of the last IMU sample
   // (at most one IMU period older at 100 Hz).
   solution_.t_us = t_us;
   solution_.image_quality = image_quality_;
+  StageInputs in;
+  in.filter_aligned = ekf_.aligned();
+  in.panel_fixed = has_panel_ && markers_.panelFixed();
+  in.map_ready = false;  // the stage-1 workspace map is not built yet: stage 2 is not entered
+  in.faces_seen_fraction = has_panel_ ? markers_.facesSeenFraction() : 0.0;
+  solution_.stage = stage_.update(t_us, in);
+  if (in.panel_fixed) solution_.status |= kStatusPanelFixed;
   if (sink_) sink_->recordSolution(solution_);
   return solution_;
 }

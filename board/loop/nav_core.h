@@ -2,9 +2,12 @@
 #include <cstdint>
 #include <string>
 
-#include "board/config/board_config.h"
+#include "board/config/vehicle_setup.h"
 #include "drivers/recording/record_sink.h"
 #include "nav/ekf/ekf.h"
+#include "nav/pipeline/marker_fusion.h"
+#include "nav/pipeline/pose_history.h"
+#include "nav/stage/stage_machine.h"
 #include "nav/types/input_sample.h"
 #include "nav/types/nav_solution.h"
 
@@ -26,7 +29,7 @@ class NavCore {
   NavCore(const NavCore&) = delete;
   NavCore& operator=(const NavCore&) = delete;
 
-  bool init(const BoardConfig& config, RecordSink* sink, std::string* error);
+  bool init(const VehicleSetup& setup, RecordSink* sink, std::string* error);
 
   // One input, in consumption order. It is recorded before it is used.
   void consume(const InputSample& sample);
@@ -37,12 +40,18 @@ class NavCore {
   const NavSolution& last() const { return solution_; }
   const InputCounters& counters() const { return counters_; }
   const Ekf& ekf() const { return ekf_; }
+  const MarkerFusion& markers() const { return markers_; }
+  bool hasPanel() const { return has_panel_; }
 
  private:
   void count(FuseResult r);
   void consumeVision(const VisionResult& v);
 
   Ekf ekf_;
+  PoseHistory poses_;
+  MarkerFusion markers_;
+  StageMachine stage_;
+  bool has_panel_ = false;
   RecordSink* sink_ = nullptr;
   NavSolution solution_;
   InputCounters counters_;

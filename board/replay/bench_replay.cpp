@@ -29,8 +29,7 @@ struct PendingVision {
 
 // State of one bench replay: the core, its sink, vision, and the tick clock of the recording.
 struct BenchRun {
-  BoardConfig config;
-  std::string board_text;
+  VehicleSetup setup;
   RecordingWriter writer;
   NavCore core;
   VisionPipeline vision;
@@ -47,13 +46,9 @@ struct BenchRun {
   bool any = false;
 };
 
-bool loadBoard(const ReplayOptions& o, const RecordingReader& reader, BenchRun* run, std::string* error) {
-  return loadReplayBoard(o.board_path, reader, o.input_path, &run->config, &run->board_text, error);
-}
-
 bool initRun(const ReplayOptions& o, const RecordingReader& reader, BenchRun* run, std::string* error) {
-  if (!loadBoard(o, reader, run, error)) return false;
-  const BoardConfig& c = run->config;
+  if (!loadReplaySetup(o.board_path, reader, o.input_path, &run->setup, error)) return false;
+  const BoardConfig& c = run->setup.config;
   const TaskSpec table[] = {
       {"nav", c.loop.rate_hz, c.loop.budget_us, false},
       {"vision", static_cast<int>(c.camera.rate_hz + 0.5), c.loop.vision_budget_us, true},
@@ -66,16 +61,13 @@ bool initRun(const ReplayOptions& o, const RecordingReader& reader, BenchRun* ru
   RecordingOptions ro = recordingOptions(c);
   ro.record_images = o.record_images;
   if (!run->writer.open(o.out_dir + "/replay.mcap", ro, error)) return false;
-  run->writer.recordMetadata(kBoardMetadata, {{"yaml", run->board_text}});
+  for (const auto& [name, values] : recordingMetadata(run->setup)) run->writer.recordMetadata(name, values);
   if (!run->pending.allocate(static_cast<std::size_t>(c.buffers.vision_results))) {
     if (error) *error = "replay: cannot allocate the vision result queue";
     return false;
   }
-  VisionPipelineConfig vc;
-  vc.width_px = c.camera.width_px;
-  vc.height_px = c.camera.height_px;
-  if (!run->vision.init(vc, error)) return false;
-  return run->core.init(c, &run->writer, error);
+  if (!run->vision.init(visionConfig(run->setup), error)) return false;
+  return run->core.init(run->setup, &run->writer, error);
 }
 
 void noteTime(BenchRun* run, TimeUs t_us) {
@@ -89,6 +81,9 @@ void tickAt(BenchRun* run, TimeUs t_us) {
   const TimeUs start = monotonicUs();
   const NavSolution& s = run->core.tick(t_us);
   run->scheduler.recordRun(run->nav_task, monotonicUs() - start);
+  const double dive_s = usToS(s.t_us - run->first_us);
+  if ((s.status & kStatusPanelFixed) && run->summary->panel_fixed_at_s < 0) run->summary->panel_fixed_at_s = dive_s;
+  if (s.stage == NavStage::kOptimised && run->summary->stage2_at_s < 0) run->summary->stage2_at_s = dive_s;
   // Before alignment the filter has no attitude: those epochs are neither a trajectory nor scored.
   if (s.stage != NavStage::kInit) run->summary->estimate.push_back({usToS(s.t_us), s.p_robot_in_odom_m, s.q_odom_robot});
   ++run->summary->ticks;
@@ -122,7 +117,7 @@ void runVision(BenchRun* run, const StereoFrame& frame) {
   run->scheduler.recordRun(run->vision_task, elapsed);
   p.result.processing_us = static_cast<std::uint32_t>(elapsed);
   // Vision results reach the loop a fixed latency after capture, so the replay is deterministic.
-  p.available_us = frame.t_us + static_cast<TimeUs>(run->config.loop.vision_latency_ms) * 1000;
+  p.available_us = frame.t_us + static_cast<TimeUs>(run->setup.config.loop.vision_latency_ms) * 1000;
   run->pending.push(p);
   ++run->summary->frames;
 }
@@ -189,19 +184,17 @@ void computeReplayMetrics(ReplaySummary* s) {
 }
 
 
-bool loadReplayBoard(const std::string& board_path, const RecordingReader& reader, const std::string& recording,
-                     BoardConfig* config, std::string* board_text, std::string* error) {
-  if (!board_path.empty()) {
-    return readTextFile(board_path, "the board file", board_text, error) &&
-           loadBoardConfigText(*board_text, board_path, config, error);
+bool loadReplaySetup(const std::string& board_path, const RecordingReader& reader, const std::string& recording,
+                     VehicleSetup* setup, std::string* error) {
+  if (!board_path.empty()) return loadVehicleSetup(board_path, setup, error);
+  bool found = false;
+  if (!setupFromMetadata(reader.metadata(kBoardMetadata), reader.metadata("deepnav.panel"),
+                         recording + " (stored board)", setup, error, &found)) {
+    return false;
   }
-  const auto* stored = reader.metadata(kBoardMetadata);
-  if (stored && stored->count("yaml")) {
-    *board_text = stored->at("yaml");
-    return loadBoardConfigText(*board_text, recording + " (stored board)", config, error);
-  }
-  *config = defaultBoardConfig();
-  board_text->clear();
+  if (found) return true;
+  *setup = VehicleSetup{};
+  setup->config = defaultBoardConfig();
   return true;
 }
 
@@ -226,6 +219,8 @@ bool runBenchReplay(const ReplayOptions& o, ReplaySummary* summary, std::string*
   summary->wall_s = usToS(monotonicUs() - wall_start);
   summary->dive_s = usToS(run->last_us - run->first_us);
   summary->inputs = run->core.counters();
+  summary->markers = run->core.markers().counters();
+  summary->panel = run->core.markers().panelEstimator().counters();
   summary->read = reader.stats();
   summary->warnings = reader.warnings();
   summary->loop = run->scheduler.stats();

@@ -31,6 +31,10 @@ struct ReplaySummary {
   double dive_s = 0.0;           // recording time span
   double wall_s = 0.0;           // time the replay took
   InputCounters inputs;
+  MarkerFusionCounters markers;      // marker observations and fused marker poses
+  PanelPoseCounters panel;           // stage-1 panel pose estimation
+  double panel_fixed_at_s = -1.0;    // dive time when the panel pose was fixed; -1: never
+  double stage2_at_s = -1.0;         // dive time when stage 2 began; -1: never
   ReplayReadStats read;
   LoopStats loop;
   std::vector<std::string> warnings;
@@ -49,10 +53,10 @@ struct ReplaySummary {
 // Writes the outputs to options.out_dir. False with a message naming the file on error.
 bool runBenchReplay(const ReplayOptions& options, ReplaySummary* summary, std::string* error);
 
-// The board a replay runs with: board_path if given, else the board stored in the recording, else the
-// built-in defaults. board_text receives its YAML (stored again in the replay's own recording).
-bool loadReplayBoard(const std::string& board_path, const RecordingReader& reader, const std::string& recording,
-                     BoardConfig* config, std::string* board_text, std::string* error);
+// The setup a replay runs with: board_path (and the panel file it names) if given, else the board and
+// panel stored in the recording, else the built-in defaults without a panel.
+bool loadReplaySetup(const std::string& board_path, const RecordingReader& reader, const std::string& recording,
+                     VehicleSetup* setup, std::string* error);
 
 // Fills errors and smoothness from estimate and truth.
 void computeReplayMetrics(ReplaySummary* summary);

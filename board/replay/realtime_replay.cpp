@@ -20,14 +20,13 @@ constexpr TimeUs kDrainUs = 500'000;       // let the loop consume the last samp
 bool runRealtimeReplay(const ReplayOptions& o, ReplaySummary* summary, std::string* error) {
   RecordingReader reader;
   if (!reader.open(o.input_path, error)) return false;
-  BoardConfig config;
-  std::string board_text;
-  if (!loadReplayBoard(o.board_path, reader, o.input_path, &config, &board_text, error)) return false;
+  VehicleSetup setup;
+  if (!loadReplaySetup(o.board_path, reader, o.input_path, &setup, error)) return false;
   std::error_code ec;
   std::filesystem::create_directories(o.out_dir, ec);
   const std::string live_path = o.out_dir + "/live.mcap";
   auto loop = std::make_unique<LiveLoop>();
-  if (!loop->init(config, board_text, live_path, error)) return false;
+  if (!loop->init(setup, live_path, error)) return false;
   ReplaySource source;
   if (!source.open(o.input_path, error)) return false;
   const TimeUs offset = source.firstTimeUs() - (monotonicUs() + kStartDelayUs);

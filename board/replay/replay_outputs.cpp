@@ -80,6 +80,12 @@ bool writeReplayOutputs(const std::string& dir, const ReplaySummary& s, std::str
   out << "  \"solutions_compared\": " << s.solutions_compared << ",\n  \"mismatches\": " << s.mismatches << ",\n";
   out << "  \"dive_s\": " << s.dive_s << ",\n  \"wall_s\": " << s.wall_s << ",\n";
   out << "  \"inputs\": " << inputsJson(s.inputs) << ",\n";
+  out << "  \"markers\": {\"images\": " << s.markers.images << ", \"observations\": " << s.markers.observations
+      << ", \"unknown_id\": " << s.markers.unknown_id << ", \"panel_observations_accepted\": " << s.panel.accepted
+      << ", \"panel_rejected_outlier\": " << s.panel.rejected_outlier << ", \"panel_fixed_at_s\": "
+      << s.panel_fixed_at_s << ", \"poses_fused\": " << s.markers.fused << ", \"poses_accepted\": "
+      << s.markers.accepted << "},\n";
+  out << "  \"stage2_at_s\": " << s.stage2_at_s << ",\n";
   out << "  \"read\": {\"messages\": " << s.read.messages << ", \"bad_messages\": " << s.read.bad_messages
       << ", \"unknown_topic\": " << s.read.unknown_topic << ", \"incomplete_frames\": " << s.read.incomplete_frames
       << "},\n";
@@ -116,6 +122,13 @@ std::string formatReplaySummary(const ReplaySummary& s) {
                 static_cast<unsigned long long>(s.inputs.accepted), static_cast<unsigned long long>(s.inputs.rejected),
                 static_cast<unsigned long long>(s.inputs.dropped_late),
                 static_cast<unsigned long long>(s.inputs.bad_input));
+  o << line;
+  std::snprintf(line, sizeof line,
+                "markers: %u observations in %u images; panel %s; %u marker poses fused, %u accepted\n",
+                s.markers.observations, s.markers.images,
+                s.panel_fixed_at_s >= 0 ? ("fixed at " + std::to_string(s.panel_fixed_at_s) + " s").c_str()
+                                        : "not fixed",
+                s.markers.fused, s.markers.accepted);
   o << line;
   if (s.has_truth) {
     o << "\n| metric | mean | std | rms | max |\n|---|---|---|---|---|\n";

@@ -1,5 +1,6 @@
 #include "drivers/recording/sample_codec.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -173,6 +174,34 @@ bool readAttitude(CdrReader& r, AttitudeSample* s) {
   return readHeader(r, &s->t_us) && r.f64(&s->roll_rad) && r.f64(&s->pitch_rad) && r.f64(&s->sigma_rad);
 }
 
+void writeMarker(CdrWriter& w, const MarkerObservation& m) {
+  w.i32(m.id);
+  for (const auto& c : m.corners_px) {
+    w.f64(c.x());
+    w.f64(c.y());
+  }
+  writeQuat(w, m.q_cam_marker);
+  writeVec3(w, m.p_marker_in_cam_m);
+  writeQuat(w, m.q_cam_marker_alt);
+  writeVec3(w, m.p_marker_in_cam_alt_m);
+  w.f64(m.reprojection_error_px);
+  w.f64(m.reprojection_error_alt_px);
+  w.boolean(m.ambiguous);
+  w.f64(m.distance_m);
+  w.f64(m.obliqueness_rad);
+}
+
+bool readMarker(CdrReader& r, MarkerObservation* m) {
+  if (!r.i32(&m->id)) return false;
+  for (auto& c : m->corners_px) {
+    if (!r.f64(&c.x()) || !r.f64(&c.y())) return false;
+  }
+  return readQuat(r, &m->q_cam_marker) && readVec3(r, &m->p_marker_in_cam_m) && readQuat(r, &m->q_cam_marker_alt) &&
+         readVec3(r, &m->p_marker_in_cam_alt_m) && r.f64(&m->reprojection_error_px) &&
+         r.f64(&m->reprojection_error_alt_px) && r.boolean(&m->ambiguous) && r.f64(&m->distance_m) &&
+         r.f64(&m->obliqueness_rad);
+}
+
 void writeVision(CdrWriter& w, const VisionResult& s) {
   writeHeader(w, s.t_us, Topic::kVisionResult);
   w.u64(s.sequence);
@@ -182,11 +211,24 @@ void writeVision(CdrWriter& w, const VisionResult& s) {
   w.f64(s.mdm_f2);
   w.f64(s.mdm_f3);
   w.f64(s.image_quality);
+  const auto n = static_cast<std::size_t>(std::clamp(s.marker_count, 0, VisionResult::kMaxMarkers));
+  w.sequenceLength(n);
+  for (std::size_t i = 0; i < n; ++i) writeMarker(w, s.markers[i]);
+  w.i32(s.markers_dropped);
 }
 
 bool readVision(CdrReader& r, VisionResult* s) {
-  return readHeader(r, &s->t_us) && r.u64(&s->sequence) && r.u32(&s->processing_us) && r.boolean(&s->frame_ok) &&
-         r.f64(&s->mdm_f1) && r.f64(&s->mdm_f2) && r.f64(&s->mdm_f3) && r.f64(&s->image_quality);
+  std::uint32_t n = 0;
+  if (!readHeader(r, &s->t_us) || !r.u64(&s->sequence) || !r.u32(&s->processing_us) || !r.boolean(&s->frame_ok) ||
+      !r.f64(&s->mdm_f1) || !r.f64(&s->mdm_f2) || !r.f64(&s->mdm_f3) || !r.f64(&s->image_quality) ||
+      !r.sequenceLength(&n, 4) || n > static_cast<std::uint32_t>(VisionResult::kMaxMarkers)) {
+    return false;
+  }
+  s->marker_count = static_cast<std::int32_t>(n);
+  for (std::uint32_t i = 0; i < n; ++i) {
+    if (!readMarker(r, &s->markers[i])) return false;
+  }
+  return r.i32(&s->markers_dropped);
 }
 
 struct InputWriter {

@@ -50,7 +50,15 @@ const ros::MsgDefinitions& projectDefinitions() {
       {"deepnav_msgs/VisionResult",
        "std_msgs/Header header # stamp = capture time of the pair\nuint64 sequence\n"
        "uint32 processing_us\nbool frame_ok\nfloat64 mdm_f1\nfloat64 mdm_f2\nfloat64 mdm_f3\n"
-       "float64 image_quality # [0, 1], -1 = none\n"},
+       "float64 image_quality # [0, 1], -1 = none\nMarkerObservation[] markers\nint32 markers_dropped\n"},
+      {"deepnav_msgs/MarkerObservation",
+       "int32 id # ArUco id\nfloat64[8] corners # px: u, v of top-left, top-right, bottom-right, bottom-left\n"
+       "geometry_msgs/Quaternion orientation # marker in the camera optical frame (best IPPE solution)\n"
+       "geometry_msgs/Vector3 position # m, marker centre in the camera optical frame\n"
+       "geometry_msgs/Quaternion orientation_alt # the other IPPE solution\n"
+       "geometry_msgs/Vector3 position_alt\nfloat64 reprojection_error # px RMS\n"
+       "float64 reprojection_error_alt\nbool ambiguous\nfloat64 distance # m\n"
+       "float64 obliqueness # rad, marker normal vs ray to the camera\n"},
       {"deepnav_msgs/StereoInfo",
        "std_msgs/Header header # stamp = capture time (mid-exposure)\nuint32 exposure_us\n"
        "uint64 sequence\nbool rectified\n"},

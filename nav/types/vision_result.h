@@ -1,5 +1,8 @@
 #pragma once
+#include <array>
 #include <cstdint>
+
+#include "nav/markers/marker_observation.h"
 
 #include "nav/types/time.h"
 
@@ -17,6 +20,11 @@ struct VisionResult {
   double mdm_f2 = 0.0;
   double mdm_f3 = 0.0;
   double image_quality = -1.0;    // the paper's m_I(t) in [0, 1]; -1 when not computed
+  // Fiducial markers seen in the left image (at most kMaxMarkers: a 2 m face at 1.5 m shows a few).
+  static constexpr int kMaxMarkers = 8;
+  std::array<MarkerObservation, kMaxMarkers> markers{};
+  std::int32_t marker_count = 0;
+  std::int32_t markers_dropped = 0;  // detected beyond kMaxMarkers, not reported
 };
 
 }  // namespace deepnav

@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "board/config/board_config.h"
+#include "board/config/vehicle_setup.h"
 #include "board/loop/live_loop.h"
 #include "tools/sim/scenario_loader.h"
 #include "tools/sim/sensor_simulator.h"
@@ -97,11 +97,11 @@ void pushDue(LiveInputs& in, const std::vector<sim::SimEvent>& events, std::size
 TEST(LoopAllocations, SteadyStateLoopDoesNotAllocate) {
   // GIVEN the vehicle runtime initialised from the sim board, recording through its queued recorder
   const auto events = simulate(20.0);
-  BoardConfig config;
+  VehicleSetup setup;
   std::string error;
-  ASSERT_TRUE(loadBoardConfig(std::string(DEEPNAV_SOURCE_DIR) + "/board/sim/board.yaml", &config, &error)) << error;
+  ASSERT_TRUE(loadVehicleSetup(std::string(DEEPNAV_SOURCE_DIR) + "/board/sim/board.yaml", &setup, &error)) << error;
   LiveLoop loop;
-  ASSERT_TRUE(loop.init(config, "", ::testing::TempDir() + "alloc.mcap", &error)) << error;
+  ASSERT_TRUE(loop.init(setup, ::testing::TempDir() + "alloc.mcap", &error)) << error;
   std::size_t next = 0;
   TimeUs t_us = 0;
   // WHEN 5 s of ticks warm it up (alignment, first fusions, history filling)

@@ -104,12 +104,12 @@ namespace {
 
 TEST(NavCoreHealth, ASensorThatStopsIsFlaggedStaleAtTheTickEvenWithoutOtherInputs) {
   // GIVEN a loop fed 10 s of a dive WHEN every input stops THEN the ticks alone raise the stale flags
-  const std::string dive = testing::makeTestDive("stale_dive", 10.0);
-  BoardConfig config;
+  const std::string dive = testing::makeTestDive("stale_dive", 10.0, 7, /*render=*/false);
+  VehicleSetup setup;
   std::string error;
-  ASSERT_TRUE(loadBoardConfig(std::string(DEEPNAV_SOURCE_DIR) + "/board/sim/board.yaml", &config, &error)) << error;
+  ASSERT_TRUE(loadVehicleSetup(std::string(DEEPNAV_SOURCE_DIR) + "/board/sim/board.yaml", &setup, &error)) << error;
   NavCore core;
-  ASSERT_TRUE(core.init(config, nullptr, &error)) << error;
+  ASSERT_TRUE(core.init(setup, nullptr, &error)) << error;
   RecordingReader reader;
   ASSERT_TRUE(reader.open(dive, &error)) << error;
   TimeUs last = 0;

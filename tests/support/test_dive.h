@@ -11,7 +11,8 @@
 namespace deepnav::testing {
 
 // Writes a simulated dive of the default scenario shortened to duration_s, and returns its path.
-inline std::string makeTestDive(const std::string& name, double duration_s, std::uint64_t seed = 7) {
+inline std::string makeTestDive(const std::string& name, double duration_s, std::uint64_t seed = 7,
+                                bool render = true) {
   const std::string dir = ::testing::TempDir();
   std::ifstream in(std::string(DEEPNAV_SOURCE_DIR) + "/tools/sim/scenarios/default.yaml");
   std::stringstream text;
@@ -28,6 +29,7 @@ inline std::string makeTestDive(const std::string& name, double duration_s, std:
   o.board_path = std::string(DEEPNAV_SOURCE_DIR) + "/board/sim/board.yaml";
   o.seed = seed;
   o.progress = false;
+  o.render = render;
   sim::DiveRecordSummary summary;
   std::string error;
   EXPECT_TRUE(sim::recordDive(o, &summary, &error)) << error;

@@ -72,6 +72,12 @@ TEST(BoardConfig, MissingFileIsAnError) {
   EXPECT_NE(error.find("/nonexistent/board.yaml: cannot open"), std::string::npos);
 }
 
+TEST(BoardConfig, DeclaredDefaultsAreAllValid) {
+  std::string error;
+  EXPECT_TRUE(checkBoardDefaults(&error)) << error;
+  EXPECT_GT(defaultBoardConfig().markers.pos_floor_m, 0.0);  // a default after the (empty) panel_file
+}
+
 TEST(BoardConfig, EveryParameterIsDocumented) {
   const std::string table = describeBoardParams();
   EXPECT_NE(table.find("`loop.rate_hz` | int | Hz | `100` | an integer in [10, 1000]"), std::string::npos)

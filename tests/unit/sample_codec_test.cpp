@@ -81,9 +81,21 @@ TEST(SampleCodec, DvlDepthHeadingAttitudeVisionSurvive) {
   v.frame_ok = true;
   v.mdm_f1 = 0.4;
   v.image_quality = 0.55;
+  v.marker_count = 2;
+  v.markers[1].id = 33;
+  v.markers[1].corners_px[3] = {100.25, 200.5};
+  v.markers[1].p_marker_in_cam_m = {0.1, -0.2, 1.5};
+  v.markers[1].ambiguous = true;
+  v.markers[1].obliqueness_rad = 0.3;
   const VisionResult v2 = roundTrip(v);
   EXPECT_EQ(v2.sequence, 17u);
   EXPECT_EQ(v2.image_quality, 0.55);
+  ASSERT_EQ(v2.marker_count, 2);
+  EXPECT_EQ(v2.markers[1].id, 33);
+  EXPECT_EQ(v2.markers[1].corners_px[3], Eigen::Vector2d(100.25, 200.5));
+  EXPECT_EQ(v2.markers[1].p_marker_in_cam_m, v.markers[1].p_marker_in_cam_m);
+  EXPECT_TRUE(v2.markers[1].ambiguous);
+  EXPECT_EQ(v2.markers[1].obliqueness_rad, 0.3);
 }
 
 TEST(SampleCodec, NavSolutionSurvivesBitForBit) {

@@ -1,10 +1,13 @@
 #include "tools/sim/dive_recorder.h"
 
 #include <cstdio>
+#include <memory>
 
-#include "board/config/board_config.h"
+#include "board/config/panel_file.h"
 #include "board/config/recording_options.h"
-#include "board/config/text_file.h"
+#include "board/config/vehicle_setup.h"
+#include "tools/sim/render/panel_knowledge.h"
+#include "tools/sim/render/stereo_renderer.h"
 #include "drivers/recording/recording_writer.h"
 #include "tools/sim/scenario_loader.h"
 #include "tools/sim/sensor_simulator.h"
@@ -26,9 +29,32 @@ TruthSample toTruth(const GroundTruthSample& g, const Eigen::Vector3d& scene_to_
   return t;
 }
 
-// Sensor samples become loop inputs; the camera ticks wait for the renderer.
-void recordEvent(const SimEvent& e, const Eigen::Vector3d& scene_to_odom_m, RecordingWriter* writer,
-                 DiveRecordSummary* summary) {
+// Renders the pair of a camera tick into one reused frame and records it.
+struct FrameRecorder {
+  StereoRenderer renderer;
+  StereoFrame frame;
+  bool enabled = false;
+
+  bool init(const Scenario& scenario, std::uint64_t seed, const BoardConfig& board, bool render, std::string* error) {
+    enabled = render && scenario.camera.enabled;
+    if (!enabled) return true;
+    if (!allocateStereoFrame(frame, scenario.camera.width_px, scenario.camera.height_px, board.camera.channels)) {
+      if (error) *error = "sim: cannot allocate the stereo frame";
+      return false;
+    }
+    return renderer.init(scenario, seed, board.camera.channels, error);
+  }
+  void record(const CameraTick& tick, RecordingWriter* writer, DiveRecordSummary* summary) {
+    if (!enabled || !renderer.render(tick, &frame, nullptr)) return;
+    frame.exposure_us = 4000;
+    writer->recordFrame(frame, -1);
+    ++summary->frames;
+  }
+};
+
+// Sensor samples become loop inputs; camera ticks become rendered stereo pairs.
+void recordEvent(const SimEvent& e, const Eigen::Vector3d& scene_to_odom_m, FrameRecorder* frames,
+                 RecordingWriter* writer, DiveRecordSummary* summary) {
   switch (e.stream) {
     case SimStream::kGroundTruth:
       writer->recordTruth(toTruth(std::get<GroundTruthSample>(e.sample), scene_to_odom_m));
@@ -38,7 +64,10 @@ void recordEvent(const SimEvent& e, const Eigen::Vector3d& scene_to_odom_m, Reco
     case SimStream::kCompass: writer->recordInput(std::get<HeadingSample>(e.sample)); break;
     case SimStream::kAttitude: writer->recordInput(std::get<AttitudeSample>(e.sample)); break;
     case SimStream::kDepth: writer->recordInput(std::get<DepthSample>(e.sample)); break;
-    case SimStream::kCamera: ++summary->camera_ticks; break;
+    case SimStream::kCamera:
+      ++summary->camera_ticks;
+      frames->record(std::get<CameraTick>(e.sample), writer, summary);
+      break;
     case SimStream::kCount: break;
   }
 }
@@ -49,23 +78,21 @@ bool recordDive(const DiveRecordOptions& o, DiveRecordSummary* summary, std::str
   *summary = DiveRecordSummary{};
   Scenario scenario;
   if (!loadScenario(o.scenario_path, &scenario, error)) return false;
-  std::string board_text;
-  BoardConfig board;
-  if (!readTextFile(o.board_path, "the board file", &board_text, error) ||
-      !loadBoardConfigText(board_text, o.board_path, &board, error)) {
-    return false;
-  }
+  VehicleSetup setup;
+  if (!loadVehicleSetup(o.board_path, &setup, error)) return false;
   SensorSimulator sim;
   if (!sim.init(scenario, o.seed, error)) return false;
+  auto frames = std::make_unique<FrameRecorder>();
+  if (!frames->init(scenario, o.seed, setup.config, o.render, error)) return false;
   RecordingWriter writer;
-  if (!writer.open(o.out_path, recordingOptions(board), error)) return false;
-  writer.recordMetadata("deepnav.board", {{"yaml", board_text}, {"path", o.board_path}});
+  if (!writer.open(o.out_path, recordingOptions(setup.config), error)) return false;
+  for (const auto& [name, values] : recordingMetadata(setup)) writer.recordMetadata(name, values);
   writer.recordMetadata("deepnav.sim", {{"scenario", o.scenario_path}, {"seed", std::to_string(o.seed)}});
   const Eigen::Vector3d scene_to_odom_m = sceneToOdomOffset(sim);
   SimEvent e;
   TimeUs next_report_us = 0;
   while (sim.next(&e)) {
-    recordEvent(e, scene_to_odom_m, &writer, summary);
+    recordEvent(e, scene_to_odom_m, frames.get(), &writer, summary);
     summary->duration_s = usToS(e.t_us);
     if (o.progress && e.t_us >= next_report_us) {
       std::fprintf(stderr, "sim: %5.1f / %.0f s simulated\n", usToS(e.t_us), scenario.duration_s);
@@ -78,6 +105,12 @@ bool recordDive(const DiveRecordOptions& o, DiveRecordSummary* summary, std::str
     return false;
   }
   return writer.close(error);
+}
+
+bool writeScenarioPanel(const std::string& scenario_path, const std::string& out_path, std::string* error) {
+  Scenario scenario;
+  return loadScenario(scenario_path, &scenario, error) &&
+         writePanelDescription(out_path, makePanelDescription(scenario), error);
 }
 
 }  // namespace deepnav::sim

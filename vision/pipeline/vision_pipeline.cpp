@@ -1,5 +1,6 @@
 #include "vision/pipeline/vision_pipeline.h"
 
+#include <algorithm>
 #include <string>
 
 namespace deepnav {
@@ -10,7 +11,15 @@ bool VisionPipeline::init(const VisionPipelineConfig& config, std::string* error
     return false;
   }
   config_ = config;
-  return true;
+  return !config.detect_markers || detector_.init(config.markers, error);
+}
+
+void VisionPipeline::detectMarkers(const StereoFrame& frame, VisionResult* result) {
+  if (!config_.detect_markers || !detector_.detect(frame.left, &observations_)) return;
+  const int n = std::min<int>(observations_.count, VisionResult::kMaxMarkers);
+  for (int i = 0; i < n; ++i) result->markers[static_cast<std::size_t>(i)] = observations_.items[static_cast<std::size_t>(i)];
+  result->marker_count = n;
+  result->markers_dropped = observations_.count - n + observations_.dropped;
 }
 
 void VisionPipeline::process(const StereoFrame& frame, VisionResult* result) {
@@ -27,6 +36,7 @@ void VisionPipeline::process(const StereoFrame& frame, VisionResult* result) {
   result->mdm_f3 = mdm.f3;
   // Until the ORB VO reports its tracked-feature count, the quality is the MDM part of m_I alone.
   result->image_quality = mdm.score;
+  detectMarkers(frame, result);
 }
 
 }  // namespace deepnav

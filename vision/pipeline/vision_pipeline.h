@@ -3,6 +3,7 @@
 
 #include "nav/types/vision_result.h"
 #include "vision/iqa/mdm.h"
+#include "vision/markers/marker_detector.h"
 #include "vision/types/stereo_frame.h"
 
 namespace deepnav {
@@ -10,6 +11,8 @@ namespace deepnav {
 struct VisionPipelineConfig {
   int width_px = 688;
   int height_px = 516;
+  bool detect_markers = false;   // when the vehicle has a panel description
+  MarkerDetectorConfig markers;  // dictionary, marker size, rectified intrinsics
 };
 
 // Per-stereo-pair processing of the vision worker: checks the frame, scores image quality, and (as the
@@ -24,7 +27,11 @@ class VisionPipeline {
 
  private:
   VisionPipelineConfig config_{};
+  void detectMarkers(const StereoFrame& frame, VisionResult* result);
+
   MdmWorkspace mdm_ws_{};
+  MarkerDetector detector_;
+  MarkerObservations observations_;
 };
 
 }  // namespace deepnav

@@ -1,0 +1,76 @@
+#include "board/config/vehicle_setup.h"
+
+#include <filesystem>
+
+#include "board/config/panel_file.h"
+#include "board/config/text_file.h"
+
+namespace deepnav {
+
+bool parseVehicleSetup(const std::string& board_text, const std::string& panel_text, const std::string& name,
+                       VehicleSetup* s, std::string* error) {
+  s->board_text = board_text;
+  s->panel_text = panel_text;
+  if (!loadBoardConfigText(board_text, name, &s->config, error)) return false;
+  s->has_panel = !panel_text.empty();
+  return !s->has_panel || parsePanelDescription(panel_text, name + " (panel)", &s->panel, error);
+}
+
+bool loadVehicleSetup(const std::string& board_path, VehicleSetup* s, std::string* error) {
+  std::string board_text;
+  if (!readTextFile(board_path, "the board file", &board_text, error) ||
+      !loadBoardConfigText(board_text, board_path, &s->config, error)) {
+    return false;
+  }
+  std::string panel_text;
+  if (!s->config.markers.panel_file.empty()) {
+    const auto panel_path = std::filesystem::path(board_path).parent_path() / s->config.markers.panel_file;
+    if (!readTextFile(panel_path.string(), "the panel description (markers.panel_file)", &panel_text, error)) {
+      return false;
+    }
+    return parseVehicleSetup(board_text, panel_text, panel_path.string(), s, error);
+  }
+  return parseVehicleSetup(board_text, panel_text, board_path, s, error);
+}
+
+std::vector<std::pair<std::string, std::map<std::string, std::string>>> recordingMetadata(const VehicleSetup& s) {
+  std::vector<std::pair<std::string, std::map<std::string, std::string>>> out;
+  out.push_back({"deepnav.board", {{"yaml", s.board_text}}});
+  if (s.has_panel) out.push_back({"deepnav.panel", {{"yaml", s.panel_text}}});
+  return out;
+}
+
+bool setupFromMetadata(const std::map<std::string, std::string>* board, const std::map<std::string, std::string>* panel,
+                       const std::string& name, VehicleSetup* setup, std::string* error, bool* found) {
+  *found = board && board->count("yaml");
+  if (!*found) return true;
+  const std::string panel_text = panel && panel->count("yaml") ? panel->at("yaml") : std::string();
+  return parseVehicleSetup(board->at("yaml"), panel_text, name, setup, error);
+}
+
+VisionPipelineConfig visionConfig(const VehicleSetup& s) {
+  VisionPipelineConfig v;
+  v.width_px = s.config.camera.width_px;
+  v.height_px = s.config.camera.height_px;
+  v.detect_markers = s.has_panel;
+  v.markers.dictionary = s.panel.dictionary;
+  v.markers.marker_size_m = s.panel.marker_size_m;
+  v.markers.camera.fx_px = s.config.camera.fx_px;
+  v.markers.camera.fy_px = s.config.camera.fy_px;
+  v.markers.camera.cx_px = s.config.camera.cx_px;
+  v.markers.camera.cy_px = s.config.camera.cy_px;
+  return v;
+}
+
+Eigen::Isometry3d robotFromCamera(const BoardConfig& c) {
+  Eigen::Matrix3d body_from_optical;
+  body_from_optical << 0, 0, 1,  //
+      -1, 0, 0,                  //
+      0, -1, 0;
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.linear() = c.camera.q_robot_body.toRotationMatrix() * body_from_optical;
+  T.translation() = c.camera.p_cam_in_robot_m;
+  return T;
+}
+
+}  // namespace deepnav
