@@ -84,7 +84,6 @@ double worstCornerErrorPx(StereoRenderer& renderer, const CameraTick& tick, std:
       const Eigen::Vector3d p_panel = m->p_marker_in_panel_m + m->q_panel_marker * corner_in_marker[k];
       const Eigen::Vector2d expected = project(s, tick, T_odom_panel * p_panel);
       worst_px = std::max(worst_px, (expected - Eigen::Vector2d(corners[i][k].x, corners[i][k].y)).norm());
-      printf("DBG id %d k %d expected %.2f %.2f err %.2f %.2f\n", ids[i], k, expected.x(), expected.y(), corners[i][k].x - expected.x(), corners[i][k].y - expected.y());
     }
   }
   *ids_out = ids;

@@ -45,8 +45,8 @@ Eigen::Vector3f weatheredPaint(const Eigen::Vector3f& base, const PaintNoise& n,
   Eigen::Vector3f c = base * (1.0f + 0.25f * mottling + 0.12f * blotches + 0.10f * grain);
   // Chipped paint shows the dark primer in small irregular patches.
   if (blotches > 0.5f) c = Eigen::Vector3f(0.09f, 0.10f, 0.11f) * (1.0f + 0.3f * grain);
-  if (streak > 0.2f) {
-    const float w = std::min(1.0f, (streak - 0.2f) / 0.4f) * 0.7f;
+  if (streak > 0.3f) {
+    const float w = std::min(1.0f, (streak - 0.3f) / 0.4f) * 0.45f;
     c = (1.0f - w) * c + w * Eigen::Vector3f(0.07f, 0.18f, 0.33f);
   }
   // Sediment settles near the seabed.

@@ -13,7 +13,7 @@ namespace deepnav::sim {
 
 namespace {
 const Eigen::Vector3f kBackAlbedo(0.12f, 0.12f, 0.13f);  // unpainted inside of the panel
-const Eigen::Vector3f kFishAlbedo(0.50f, 0.50f, 0.46f);  // silvery
+const Eigen::Vector3f kFishAlbedo(0.30f, 0.30f, 0.28f);  // grey-silver
 }  // namespace
 
 bool Scene::init(const Scenario& scenario, const PanelDescription& panel, double quiet_zone_m, std::uint64_t seed,

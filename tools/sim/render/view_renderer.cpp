@@ -27,6 +27,16 @@ bool ViewRenderer::init(const CameraConfig& camera, int channels, const WaterOpt
   origin_local_.assign(n, Eigen::Vector3f::Zero());
   near_m_.assign(n, 0.0f);
   candidates_.reserve(n);
+  // 1 / |(x_n, y_n, 1)| per pixel: the ray's length per unit depth, used for distances and vignetting.
+  inv_ray_length_.resize(static_cast<std::size_t>(camera.width_px) * camera.height_px);
+  for (int v = 0; v < camera.height_px; ++v) {
+    const double yn = (v - camera.cy_px) / camera.fy_px;
+    for (int u = 0; u < camera.width_px; ++u) {
+      const double xn = (u - camera.cx_px) / camera.fx_px;
+      inv_ray_length_[static_cast<std::size_t>(v) * camera.width_px + u] =
+          static_cast<float>(1.0 / std::sqrt(1.0 + xn * xn + yn * yn));
+    }
+  }
   return true;
 }
 
@@ -93,18 +103,13 @@ void ViewRenderer::listCandidates(const Cone& cone) {
 
 void ViewRenderer::renderTile(int u0, int v0, int u1, int v1, const LampSet& lamps, float* radiance, float* depth_m) {
   const auto& prims = scene_->primitives();
-  const float fx = static_cast<float>(camera_.fx_px), fy = static_cast<float>(camera_.fy_px);
-  const float cx = static_cast<float>(camera_.cx_px), cy = static_cast<float>(camera_.cy_px);
   const int w = camera_.width_px, c = channels_;
   const int count = static_cast<int>(candidates_.size());
   SceneHit hit;
   LocalHit local;
   for (int v = v0; v < v1; ++v) {
-    const float yn = (v - cy) / fy;
     for (int u = u0; u < u1; ++u) {
-      const float xn = (u - cx) / fx;
-      const float len2 = 1.0f + xn * xn + yn * yn;
-      const float inv_len = 1.0f / std::sqrt(len2);
+      const float inv_len = inv_ray_length_[static_cast<std::size_t>(v) * w + u];
       const Eigen::Vector3f d = ray_base_ + static_cast<float>(u) * ray_du_ + static_cast<float>(v) * ray_dv_;
       float t_best = kMaxRange_m * inv_len;
       hit.primitive = -2;
@@ -129,12 +134,13 @@ void ViewRenderer::renderTile(int u0, int v0, int u1, int v1, const LampSet& lam
       Eigen::Vector3f L = backscatter_;
       if (hit.primitive != -2) {
         hit.t = t_best;
-        L = shade(hit, d, std::sqrt(len2), lamps);
+        L = shade(hit, d, inv_len, lamps);
         depth_m[pixel] = t_best;
       } else {
         depth_m[pixel] = 0.0f;
       }
-      L *= 1.0f / (len2 * len2);  // cos^4 of the angle off the optical axis
+      const float cos2 = inv_len * inv_len;
+      L *= cos2 * cos2;  // cos^4 of the angle off the optical axis
       float* out = radiance + pixel * c;
       if (c == 3) {
         out[0] = L[0], out[1] = L[1], out[2] = L[2];
@@ -145,15 +151,15 @@ void ViewRenderer::renderTile(int u0, int v0, int u1, int v1, const LampSet& lam
   }
 }
 
-Eigen::Vector3f ViewRenderer::shade(const SceneHit& hit, const Eigen::Vector3f& d, float ray_length,
+Eigen::Vector3f ViewRenderer::shade(const SceneHit& hit, const Eigen::Vector3f& d, float inv_ray_length,
                                     const LampSet& lamps) const {
-  const float distance = hit.t * ray_length;
+  const float distance = hit.t / inv_ray_length;
   const Eigen::Vector3f p = origin_ + hit.t * d;
   const Eigen::Vector3f n = scene_->normalAt(hit, origin_, d);
   // A pixel's footprint at the hit, widened for oblique views: fronto / sqrt(cos), the geometric mean
   // of its two axes (texture level choice only, so the square root is left to the comparison).
   const float fronto_m = hit.t * inv_fx_;
-  const float cos_view = std::max(std::abs(n.dot(d)) / ray_length, 0.1f);
+  const float cos_view = std::max(std::abs(n.dot(d)) * inv_ray_length, 0.1f);
   const Eigen::Vector3f albedo = scene_->albedoAt(hit, origin_, d, fronto_m * fronto_m / cos_view);
   Eigen::Vector3f E = Eigen::Vector3f::Zero();
   for (const Eigen::Vector3f& lamp : lamps.p_lamp_in_panel_m) {

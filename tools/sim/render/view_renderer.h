@@ -51,7 +51,8 @@ class ViewRenderer {
   Cone tileCone(int u0, int v0, int u1, int v1) const;
   void listCandidates(const Cone& cone);
   void renderTile(int u0, int v0, int u1, int v1, const LampSet& lamps, float* radiance, float* depth_m);
-  Eigen::Vector3f shade(const SceneHit& hit, const Eigen::Vector3f& d, float ray_length, const LampSet& lamps) const;
+  Eigen::Vector3f shade(const SceneHit& hit, const Eigen::Vector3f& d, float inv_ray_length,
+                        const LampSet& lamps) const;
 
   CameraConfig camera_;
   float inv_fx_ = 1.0f;
@@ -60,6 +61,7 @@ class ViewRenderer {
   WaterOptics optics_;
   WaterPath water_;
   Eigen::Vector3f backscatter_ = Eigen::Vector3f::Zero();
+  std::vector<float> inv_ray_length_;  // per pixel, 1 / |(x_n, y_n, 1)|
   // Per frame.
   Eigen::Vector3f origin_ = Eigen::Vector3f::Zero();
   float seabed_top_m_ = 0.0f;  // a ray from above the relief still above it at its hit never met it
