@@ -125,6 +125,23 @@ TEST(OrbVoExtractor, DescriptorsTurnWithTheImage) {
   EXPECT_GT(other[other.size() / 2], 60);
 }
 
+TEST(OrbVoExtractor, HammingDistanceCountsDifferingBits) {
+  cv::RNG rng(8);
+  for (int trial = 0; trial < 200; ++trial) {
+    OrbDescriptor a, b;
+    int expected = 0;
+    for (int w = 0; w < 4; ++w) {
+      a[w] = (static_cast<std::uint64_t>(rng.next()) << 32) | rng.next();
+      b[w] = trial % 3 == 0 ? a[w] : (static_cast<std::uint64_t>(rng.next()) << 32) | rng.next();
+      for (int bit = 0; bit < 64; ++bit) expected += ((a[w] ^ b[w]) >> bit) & 1u;
+    }
+    EXPECT_EQ(hammingDistance(a, b), expected);
+  }
+  OrbDescriptor zero{}, ones;
+  ones.fill(~0ull);
+  EXPECT_EQ(hammingDistance(zero, ones), 256);
+}
+
 TEST(OrbVoExtractor, RejectsBadConfigurationAndImages) {
   GridOrbExtractor extractor;
   OrbExtractorConfig config;

@@ -313,6 +313,41 @@ TEST(OrbVoOdometry, RelocalisesAfterBlankFramesNearAKeyframe) {
   }
 }
 
+TEST(OrbVoOdometry, StartsANewMapWhenLostForTooLong) {
+  OrbVoConfig config;
+  config.reset_after_lost_frames = 2;
+  OrbStereoOdometry vo;
+  std::string error;
+  ASSERT_TRUE(vo.init(config, rig(), &error)) << error;
+  OrbVoOutput out;
+  for (int k = 0; k < 3; ++k) {
+    const StereoImages images = renderNoisy(texturedScene(), trajectoryPose(k), 700 + k);
+    vo.process(k * kFramePeriodUs, images.left, images.right, &out);
+  }
+  ASSERT_EQ(out.status, OrbVoStatus::kOk);
+  // GIVEN two blank frames, WHEN a scene never seen before appears (nothing to relocalise against)
+  const cv::Mat blank(rig().height_px, rig().width_px, CV_8UC1, cv::Scalar(90));
+  for (int k = 3; k < 5; ++k) {
+    vo.process(k * kFramePeriodUs, blank, blank, &out);
+    EXPECT_EQ(out.status, OrbVoStatus::kLost);
+  }
+  const SyntheticPlaneScene other = makeOrbVoTestScene(99, 0.6);
+  const StereoImages first = renderNoisy(other, trajectoryPose(0), 800);
+  vo.process(5 * kFramePeriodUs, first.left, first.right, &out);
+  // THEN a new map starts there and tracking resumes in it
+  EXPECT_EQ(out.status, OrbVoStatus::kInitialised);
+  EXPECT_EQ(out.keyframes, 1);
+  const StereoImages second = renderNoisy(other, trajectoryPose(1), 801);
+  vo.process(6 * kFramePeriodUs, second.left, second.right, &out);
+  ASSERT_EQ(out.status, OrbVoStatus::kOk);
+  EXPECT_EQ(out.t_reference_us, 5 * kFramePeriodUs);
+  double translation_m = 0.0;
+  double rotation_deg = 0.0;
+  relativeErrors(out, trajectoryPose(0), trajectoryPose(1), &translation_m, &rotation_deg);
+  EXPECT_LT(translation_m, 0.01);
+  EXPECT_LT(rotation_deg, 0.2);
+}
+
 TEST(OrbVoOdometry, RejectsBadConfigurationAndFrames) {
   OrbStereoOdometry vo;
   std::string error;

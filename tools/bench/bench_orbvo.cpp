@@ -84,6 +84,35 @@ void BM_OrbVoFrame(benchmark::State& state) {
   state.counters["lost_rate"] = benchmark::Counter(lost, benchmark::Counter::kAvgIterations);
 }
 
+// A lost frame with a full keyframe store: every frame of an unknown scene is tried against all 64
+// stored keyframes (ranking, then PnP on the best three).
+void BM_OrbVoLostFrameRelocalisation(benchmark::State& state) {
+  deepnav::OrbVoConfig config;
+  config.keyframe.max_frames = 1;  // a keyframe per frame fills the store quickly
+  deepnav::OrbStereoOdometry vo;
+  std::string error;
+  if (!vo.init(config, deepnav::StereoRig{}, &error)) state.SkipWithError(error.c_str());
+  const std::vector<Pair>& frames = sequence();
+  deepnav::OrbVoOutput out;
+  deepnav::TimeUs t_us = 0;
+  for (int pass = 0; pass < 3; ++pass) {
+    for (int k = 0; k < kFrames; ++k, t_us += 100'000) {
+      const int i = pass % 2 == 0 ? k : kFrames - 1 - k;
+      vo.process(t_us, frames[i].left, frames[i].right, &out);
+    }
+  }
+  const deepnav::SyntheticPlaneScene unknown = deepnav::makeOrbVoTestScene(1234, 0.6);
+  const Pair lost = renderFrame(unknown, 0);
+  int keyframes = out.keyframes;
+  for (auto _ : state) {
+    vo.process(t_us, lost.left, lost.right, &out);
+    benchmark::DoNotOptimize(out);
+    t_us += 100'000;
+  }
+  state.counters["keyframes"] = keyframes;
+  state.counters["lost"] = out.status == deepnav::OrbVoStatus::kLost;
+}
+
 void BM_OrbExtractOneImage(benchmark::State& state) {
   deepnav::GridOrbExtractor extractor;
   if (!extractor.init(deepnav::OrbExtractorConfig(), 688, 516)) state.SkipWithError("init");
@@ -121,6 +150,7 @@ void BM_StereoMatch(benchmark::State& state) {
 }  // namespace
 
 BENCHMARK(BM_OrbVoFrame)->Unit(benchmark::kMillisecond)->MinTime(3.0);
+BENCHMARK(BM_OrbVoLostFrameRelocalisation)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_OrbExtractOneImage)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StereoMatch)->Unit(benchmark::kMillisecond);
 

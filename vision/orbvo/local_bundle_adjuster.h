@@ -35,7 +35,7 @@ struct BundleAdjusterSummary {
 // Windowed bundle adjustment of camera poses T_cam_world (left perturbation as in refineCameraPose)
 // and world points, by Levenberg-Marquardt on the Huber-weighted stereo reprojection error. Each
 // step eliminates the points with the Schur complement (Triggs et al., "Bundle adjustment - a
-// modern synthesis", 2000, sec. 6.1): with the camera block U, point blocks V_j and cross blocks W,
+// modern synthesis", 2000): with the camera block U, point blocks V_j and cross blocks W,
 //   (U - W V^-1 W^T) dc = b_c - W V^-1 b_p,    dp_j = V_j^-1 (b_pj - W_j^T dc),
 // the reduced camera system being small and dense (6 per free camera). Cameras [0, n_fixed) stay
 // fixed and hold the gauge. Every buffer is sized in init(); optimise() does not allocate.

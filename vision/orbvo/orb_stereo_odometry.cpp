@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "nav/ekf/so3.h"
+#include "vision/orbvo/keyframe_thumbnail.h"
 #include "vision/orbvo/projection_search.h"
 #include "vision/orbvo/relative_camera_pose.h"
 #include "vision/orbvo/stereo_projection.h"
@@ -93,6 +94,9 @@ bool OrbStereoOdometry::init(const OrbVoConfig& config, const StereoRig& rig, st
   ba_source_age_.assign(window * capacity_, 0);
   ba_source_feature_.assign(window * capacity_, 0);
   ba_outlier_.assign(window * capacity_, 0);
+  thumbnail_scratch_.create(kThumbnailHeightPx, kThumbnailWidthPx, CV_8UC1);
+  thumbnail_.assign(kThumbnailSize, 0.0f);
+  reloc_similarity_.assign(config.max_keyframes, 0.0f);
   reloc_score_.assign(config.max_keyframes, 0);
   reloc_owner_.assign(capacity_, -1);
   reloc_owner_distance_.assign(capacity_, 0);
@@ -495,6 +499,7 @@ void OrbStereoOdometry::insertKeyframe() {
                                          cur_.descriptors[j], cur_.features[j].level);
   }
   kf.map_point.assign(cur_.map_point.begin(), cur_.map_point.end());
+  makeThumbnail(cur_left_, &thumbnail_scratch_, kf.thumbnail.data());
   frames_since_keyframe_ = 0;
   keyframe_inserted_ = true;
   if (map_.keyframeCount() >= 2) bundleAdjustLocalWindow();
@@ -628,8 +633,21 @@ bool OrbStereoOdometry::relocalise() {
   const int n = static_cast<int>(cur_.features.size());
   if (n_kf == 0 || n < config_.reloc_min_inliers) return false;
   grid_.build(cur_.features);
+  // Thumbnails rank every keyframe cheaply; descriptors rank the most similar few.
+  makeThumbnail(cur_left_, &thumbnail_scratch_, thumbnail_.data());
+  for (int age = 0; age < n_kf; ++age) {
+    reloc_similarity_[age] =
+        thumbnailSimilarity(thumbnail_.data(), map_.keyframe(age).thumbnail.data());
+    reloc_score_[age] = -1;
+  }
   const int stride = std::max(1, n / config_.reloc_query_features);
-  for (int age = 0; age < n_kf; ++age) reloc_score_[age] = rankKeyframe(map_.keyframe(age), stride);
+  for (int k = 0; k < std::min(config_.reloc_thumbnail_candidates, n_kf); ++k) {
+    const int age = static_cast<int>(
+        std::max_element(reloc_similarity_.begin(), reloc_similarity_.begin() + n_kf) -
+        reloc_similarity_.begin());
+    reloc_similarity_[age] = -2.0f;
+    reloc_score_[age] = rankKeyframe(map_.keyframe(age), stride);
+  }
   for (int attempt = 0; attempt < std::min(config_.reloc_candidates, n_kf); ++attempt) {
     const int age = static_cast<int>(
         std::max_element(reloc_score_.begin(), reloc_score_.begin() + n_kf) - reloc_score_.begin());

@@ -19,8 +19,9 @@
 
 namespace deepnav {
 
-// ORB stereo visual odometry with a local map (after the DexROV ORB odometry, Di Lillo et al. /
-// Mur-Artal & Tardos' ORB-SLAM2 design, written from the papers). Per stereo pair:
+// ORB stereo visual odometry with a local map: the DexROV paper's ORB odometry (IROS 2019), with
+// the tracking / local-map / keyframe structure of ORB-SLAM2 (Mur-Artal & Tardos, T-RO 2017),
+// written from the papers. Per stereo pair:
 //  1. bucketed ORB on both images (GridOrbExtractor), row-band stereo matching with subpixel
 //     disparity and triangulation (StereoFeatureMatcher);
 //  2. tracking: the previous frame's map points projected by a constant-velocity prediction and
@@ -31,9 +32,8 @@ namespace deepnav {
 //     inliers are the tracked features;
 //  3. keyframe policy; a keyframe adds the untracked stereo points to the map and runs a windowed
 //     bundle adjustment of the newest keyframes, the oldest fixed (LocalBundleAdjuster);
-//  4. when tracking fails: relocalisation against every stored keyframe (descriptor ranking, then
-//  PnP
-//     RANSAC and refinement on the best candidates).
+//  4. when tracking fails: relocalisation against the stored keyframes (thumbnail similarity, then
+//     descriptor matches of the most similar, then PnP RANSAC and refinement on the best).
 // Output: relative pose of this frame's left camera in the previous (or last tracked) frame's, its
 // 6x6 covariance, the number of tracked features and a status.
 //
@@ -131,8 +131,11 @@ class OrbStereoOdometry {
   std::vector<std::uint8_t> ba_outlier_;
 
   // Relocalisation scratch.
-  std::vector<int> reloc_score_;  // per keyframe age
-  std::vector<int> reloc_owner_;  // per keyframe feature: best current feature
+  cv::Mat thumbnail_scratch_;
+  std::vector<float> thumbnail_;         // this frame's, when needed
+  std::vector<float> reloc_similarity_;  // per keyframe age
+  std::vector<int> reloc_score_;         // per keyframe age
+  std::vector<int> reloc_owner_;         // per keyframe feature: best current feature
   std::vector<int> reloc_owner_distance_;
 
   // Tracking state.

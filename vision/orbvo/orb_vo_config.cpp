@@ -26,6 +26,9 @@ const char* OrbVoConfig::validate() const {
       reloc_min_inliers < refiner.min_inliers) {
     return "reloc_*: query_features >= 10, candidates >= 1, min_inliers >= refiner.min_inliers";
   }
+  if (reloc_thumbnail_candidates < reloc_candidates) {
+    return "reloc_thumbnail_candidates: must be >= reloc_candidates";
+  }
   if (reloc_ratio <= 0.0 || reloc_ratio > 1.0) return "reloc_ratio: in (0, 1]";
   if (reset_after_lost_frames < 0) return "reset_after_lost_frames: must be >= 0";
   return "";

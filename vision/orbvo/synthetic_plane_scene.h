@@ -25,8 +25,8 @@ struct TexturedPlane {
 cv::Mat makeSyntheticTexture(int width_px, int height_px, std::uint64_t seed, double contrast);
 
 // Test and benchmark scene for the stereo odometries: planes rendered into a rectified stereo rig
-// by the exact plane-induced homography u ~ K [R a_s texel, R a_t texel, R o + t] (s, t, 1)^T of
-// each camera (Hartley & Zisserman, eq. 13.2), painted far to near. Every plane must stay in front
+// by the exact texture-to-image homography u ~ K [R a_s texel, R a_t texel, R o + t] (s, t, 1)^T of
+// each camera, painted far to near. Every plane must stay in front
 // of the cameras. Not for the steady state: render() allocates (cv::warpPerspective).
 class SyntheticPlaneScene {
  public:

@@ -1,5 +1,7 @@
 #include "vision/orbvo/vo_map.h"
 
+#include "vision/orbvo/keyframe_thumbnail.h"
+
 namespace deepnav {
 
 bool VoMap::init(int max_keyframes, int max_features_per_keyframe, int max_map_points) {
@@ -10,6 +12,7 @@ bool VoMap::init(int max_keyframes, int max_features_per_keyframe, int max_map_p
     kf.descriptors.reserve(max_features_per_keyframe);
     kf.u_right_px.reserve(max_features_per_keyframe);
     kf.map_point.reserve(max_features_per_keyframe);
+    kf.thumbnail.assign(kThumbnailSize, 0.0f);
   }
   points_.assign(max_map_points, MapPoint());
   free_points_.reserve(max_map_points);

@@ -29,6 +29,7 @@ struct Keyframe {
   std::vector<OrbDescriptor> descriptors;
   std::vector<float> u_right_px;  // < 0: no stereo match
   std::vector<int> map_point;     // < 0: none
+  std::vector<float> thumbnail;   // kThumbnailSize values (keyframe_thumbnail.h)
   int tracked = 0;                // map points tracked by the frame it was made from
 };
 
