@@ -17,7 +17,9 @@ bool PlaneExtractor::init(const PlaneExtractionConfig& config, const StereoGeome
   step_px_ = step_px;
   noise_.disparity_noise_per_fb = config.disparity_noise_px / geometry.focalBaseline();
   noise_.floor_m = config.point_noise_floor_m;
-  neighbour_planes_.assign(config.max_planes, Eigen::Vector4f::Zero());
+  neighbour_planes_.assign(static_cast<std::size_t>(config.max_planes) * config.max_planes,
+                           Eigen::Vector4f::Zero());
+  fits_.assign(config.max_planes, PlaneFitAccumulator{});
   ready_ = true;
   return true;
 }
@@ -38,25 +40,40 @@ int PlaneExtractor::extract(const OrganizedCloud& cloud, PlaneSet* planes) {
   plane_of_label_.fill(-1);
   region_of_label_.fill(-1);
   for (int i = 0; i < regions; ++i) region_of_label_[grower_.region(i).label] = i;
+  // Neighbouring planes (the grower's estimates): their intersections are kept out of the fit.
   for (int i = 0; i < regions; ++i) {
     const PlaneRegion& region = grower_.region(i);
-    Plane* plane = planes->addPlane();
-    if (plane == nullptr) break;
-    // Neighbouring planes (the grower's estimates): their intersections are kept out of the fit.
     NeighbourBand band;
-    band.planes = neighbour_planes_.data();
+    band.planes = neighbour_planes_.data() + i * config_.max_planes;
     band.band_m = static_cast<float>(config_.max_point_distance_m);
     band.band_sigmas = static_cast<float>(config_.distance_sigmas + 3.0);
     const std::bitset<256>& adjacent = grower_.adjacentLabels(region.label);
     for (int l = 1; l < 256 && band.count < config_.max_planes; ++l) {
       if (!adjacent.test(l) || region_of_label_[l] < 0) continue;
       const PlaneRegion& other = grower_.region(region_of_label_[l]);
-      neighbour_planes_[band.count++] << other.normal.cast<float>(),
+      neighbour_planes_[i * config_.max_planes + band.count++] << other.normal.cast<float>(),
           static_cast<float>(other.normal.dot(other.sums.mean()));
     }
-    if (!fitPlaneWithUncertainty(cloud, grower_.members() + region.member_begin,
-                                 region.member_count, region.sums, region.normal, noise_, plane,
-                                 band)) {
+    fits_[i].reset(region.sums, region.normal, noise_, band);
+  }
+  // One raster pass feeds every plane's fit: sequential reads of the cloud.
+  const cv::Mat& labels = grower_.labels();
+  for (int r = 0; r < cloud.rows(); ++r) {
+    const std::uint8_t* l = labels.ptr<std::uint8_t>(r);
+    const cv::Vec3f* p = cloud.row(r);
+    for (int c = 0; c < cloud.cols();) {
+      const std::uint8_t label = l[c];
+      int end = c + 1;
+      while (end < cloud.cols() && l[end] == label) ++end;
+      if (label != 0) fits_[region_of_label_[label]].addRun(p + c, end - c);
+      c = end;
+    }
+  }
+  for (int i = 0; i < regions; ++i) {
+    const PlaneRegion& region = grower_.region(i);
+    Plane* plane = planes->addPlane();
+    if (plane == nullptr) break;
+    if (!fits_[i].solve(region.sums, region.member_count, plane)) {
       planes->removeLast();
       continue;
     }

@@ -39,7 +39,8 @@ class PlaneExtractor {
   PlaneContourTracer tracer_;
   std::array<int, 256> plane_of_label_{};
   std::array<int, 256> region_of_label_{};
-  std::vector<Eigen::Vector4f> neighbour_planes_;
+  std::vector<Eigen::Vector4f> neighbour_planes_;  // max_planes per plane
+  std::vector<PlaneFitAccumulator> fits_;
 };
 
 }  // namespace deepnav

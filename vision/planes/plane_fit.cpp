@@ -19,70 +19,55 @@ Eigen::Matrix4d planeHessian(const Eigen::Matrix3d& S, const Eigen::Vector3d& s,
 
 }  // namespace
 
-namespace {
+void PlaneFitAccumulator::reset(const ScatterSums& sums, const Eigen::Vector3d& normal_unweighted,
+                                const PlaneNoiseModel& noise, const NeighbourBand& neighbours) {
+  origin_ = sums.origin;
+  n0_ = normal_unweighted.cast<float>();
+  const double d0 = normal_unweighted.dot(sums.mean());
+  d0_ = static_cast<float>(d0);
+  kd_ = static_cast<float>(noise.disparity_noise_per_fb);
+  k_ = noise.disparity_noise_per_fb * std::abs(d0);
+  kd2_ = noise.disparity_noise_per_fb * noise.disparity_noise_per_fb;
+  floor2_ = noise.floor_m * noise.floor_m;
+  kf_ = static_cast<float>(k_);
+  floor2f_ = static_cast<float>(floor2_);
+  neighbour_count_ = std::min(neighbours.count, kMaxNeighbours);
+  band_m_ = neighbours.band_m;
+  for (int j = 0; j < neighbour_count_; ++j) {
+    const Eigen::Vector4f& q = neighbours.planes[j];
+    d0_n_[j] = d0_ * q.head<3>();
+    d_[j] = q.w();
+    sigma_coeff_[j] = neighbours.band_sigmas * kd_ * std::abs(q.w()) * std::abs(d0_);
+  }
+  sw_ = WeightedMoments{};
+  sa_ = WeightedMoments{};
+  fitted_ = 0;
+}
 
-// Whether the cell on ray p, moved onto the region's plane (n0, d0), is within the band of a
-// neighbouring plane.
-bool inNeighbourBand(const cv::Vec3f& p, const Eigen::Vector3f& n0, float d0, float kd,
-                     const NeighbourBand& nb) {
-  const float np = n0.x() * p[0] + n0.y() * p[1] + n0.z() * p[2];
-  if (std::abs(np) < 1e-6f) return false;
-  const float scale = d0 / np;
-  const float x = p[0] * scale, y = p[1] * scale, z = p[2] * scale;
-  for (int j = 0; j < nb.count; ++j) {
-    const Eigen::Vector4f& q = nb.planes[j];
-    const float r = q.x() * x + q.y() * y + q.z() * z - q.w();
-    const float sigma = kd * z * std::abs(q.w());
-    if (std::abs(r) <= nb.band_m + nb.band_sigmas * sigma) return true;
+// Whether the cell on ray p, moved onto the region's plane (n0, d0) -- p_hat = p d0 / (n0.p) --
+// is within band_m + band_sigmas sigma_j(z_hat) of a neighbouring plane j. Multiplied by |n0.p|
+// the test needs no division: |d0 (n_j.p) - d_j (n0.p)| <= band_m |n0.p| + band_sigmas kd |d_j|
+// |d0| p_z.
+bool PlaneFitAccumulator::inNeighbourBand(const cv::Vec3f& p) const {
+  const float np = n0_.x() * p[0] + n0_.y() * p[1] + n0_.z() * p[2];
+  const float abs_np = std::abs(np);
+  for (int j = 0; j < neighbour_count_; ++j) {
+    const Eigen::Vector3f& m = d0_n_[j];
+    const float lhs = std::abs(m.x() * p[0] + m.y() * p[1] + m.z() * p[2] - d_[j] * np);
+    if (lhs <= band_m_ * abs_np + sigma_coeff_[j] * p[2]) return true;
   }
   return false;
 }
 
-}  // namespace
-
-bool fitPlaneWithUncertainty(const OrganizedCloud& cloud, const std::int32_t* cells, int count,
-                             const ScatterSums& sums, const Eigen::Vector3d& normal_unweighted,
-                             const PlaneNoiseModel& noise, Plane* plane,
-                             const NeighbourBand& neighbours) {
-  if (count < 3 || plane == nullptr) return false;
-  const Eigen::Vector3d& o = sums.origin;
-  const double d0_signed = normal_unweighted.dot(sums.mean());
-  const double d0 = std::abs(d0_signed);
-  const Eigen::Vector3f n0f = normal_unweighted.cast<float>();
-  const float kd = static_cast<float>(noise.disparity_noise_per_fb);
-  const double k = noise.disparity_noise_per_fb * d0;  // residual sigma = k Z
-  const double floor2 = noise.floor_m * noise.floor_m;
-  const int cols = cloud.cols();
-  // Weighted moments relative to the region origin (cancellation, see ScatterSums), and the
-  // moments of the expected noise: point i scatters along its ray, A_i = (k_d Z_i)^2 p_i p_i^T with
-  // k_d = sigma_d / (f B), weighted by w_i: sum w A = sum a_i p_i p_i^T, a_i = w_i (k_d Z_i)^2.
-  const double kd2 = noise.disparity_noise_per_fb * noise.disparity_noise_per_fb;
-  double W = 0.0, A = 0.0;
-  Eigen::Vector3d sq = Eigen::Vector3d::Zero(), aq = Eigen::Vector3d::Zero();
-  Eigen::Matrix3d sqq = Eigen::Matrix3d::Zero(), aqq = Eigen::Matrix3d::Zero();
-  int fitted = 0;
-  for (int i = 0; i < count; ++i) {
-    const cv::Vec3f& p = cloud.row(cells[i] / cols)[cells[i] % cols];
-    if (neighbours.count > 0 &&
-        inNeighbourBand(p, n0f, static_cast<float>(d0_signed), kd, neighbours)) {
-      continue;
-    }
-    ++fitted;
-    const double kz = k * p[2];
-    const double w = 1.0 / (kz * kz + floor2);
-    const double a = w * kd2 * p[2] * p[2];
-    const Eigen::Vector3d q(p[0] - o.x(), p[1] - o.y(), p[2] - o.z());
-    W += w;
-    sq += w * q;
-    sqq.selfadjointView<Eigen::Upper>().rankUpdate(q, w);
-    A += a;
-    aq += a * q;
-    aqq.selfadjointView<Eigen::Upper>().rankUpdate(q, a);
-  }
-  if (fitted < 3) return false;
-  sqq = sqq.selfadjointView<Eigen::Upper>();
-  aqq = aqq.selfadjointView<Eigen::Upper>();
-  const Eigen::Vector3d mq = sq / W;
+bool PlaneFitAccumulator::solve(const ScatterSums& sums, int point_count, Plane* plane) const {
+  if (fitted_ < 3 || plane == nullptr) return false;
+  const Eigen::Vector3d& o = origin_;
+  const double W = sw_.w;
+  const double A = sa_.w;
+  const Eigen::Vector3d aq = sa_.first();
+  const Eigen::Matrix3d sqq = sw_.second();
+  const Eigen::Matrix3d aqq = sa_.second();
+  const Eigen::Vector3d mq = sw_.first() / W;
   const Eigen::Vector3d centroid = o + mq;
   // sum a p p^T from the origin-relative sums (p = o + q)
   const Eigen::Matrix3d noise_abs =
@@ -116,14 +101,25 @@ bool fitPlaneWithUncertainty(const OrganizedCloud& cloud, const std::int32_t* ce
   plane->n_in_cam = n;
   plane->d_m = d;
   plane->p_centroid_in_cam_m = centroid;
-  plane->point_count = count;
-  plane->fit_point_count = fitted;
+  plane->point_count = point_count;
+  plane->fit_point_count = fitted_;
   // rms along the final normal from the unweighted scatter: n^T S_u n / N
   plane->rms_m = std::sqrt(std::max(0.0, n.dot(sums.scatter() * n)) / sums.n);
   plane->hessian = H;
   plane->covariance = C;
   plane->log_pdet_hessian = log_pdet;
   return true;
+}
+
+bool fitPlaneWithUncertainty(const OrganizedCloud& cloud, const std::int32_t* cells, int count,
+                             const ScatterSums& sums, const Eigen::Vector3d& normal_unweighted,
+                             const PlaneNoiseModel& noise, Plane* plane,
+                             const NeighbourBand& neighbours) {
+  PlaneFitAccumulator fit;
+  fit.reset(sums, normal_unweighted, noise, neighbours);
+  const int cols = cloud.cols();
+  for (int i = 0; i < count; ++i) fit.add(cloud.row(cells[i] / cols)[cells[i] % cols]);
+  return fit.solve(sums, count, plane);
 }
 
 }  // namespace deepnav

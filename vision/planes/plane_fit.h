@@ -1,5 +1,6 @@
 #pragma once
 #include <Eigen/Core>
+#include <array>
 #include <cstdint>
 
 #include "vision/cloud/organized_cloud.h"
@@ -40,13 +41,103 @@ struct PlaneNoiseModel {
 // (0.3-0.4 deg on a 0.7 m box face at 0.2 px noise). Cells whose noise-free position -- their ray
 // cut with the region's plane, so the test does not depend on their own noise -- lies within
 // band_m + band_sigmas * sigma of a neighbouring plane are therefore left out of the fit (not out
-// of the region). Returns false for fewer than 3 fitted cells.
+// of the region). At most 16 neighbouring planes are used. Returns false for fewer than 3 fitted
+// cells.
 struct NeighbourBand {
   const Eigen::Vector4f* planes = nullptr;  // (n, d) of the neighbouring planes
   int count = 0;
   float band_m = 0.0f;
   float band_sigmas = 0.0f;
 };
+
+// Weighted first and second moments, in plain doubles.
+struct WeightedMoments {
+  double w = 0.0, x = 0.0, y = 0.0, z = 0.0;
+  double xx = 0.0, xy = 0.0, xz = 0.0, yy = 0.0, yz = 0.0, zz = 0.0;
+  void add(double px, double py, double pz, double weight) {
+    w += weight;
+    const double wx = weight * px, wy = weight * py, wz = weight * pz;
+    x += wx;
+    y += wy;
+    z += wz;
+    xx += wx * px;
+    xy += wx * py;
+    xz += wx * pz;
+    yy += wy * py;
+    yz += wy * pz;
+    zz += wz * pz;
+  }
+  void merge(const WeightedMoments& o) {
+    w += o.w;
+    x += o.x;
+    y += o.y;
+    z += o.z;
+    xx += o.xx;
+    xy += o.xy;
+    xz += o.xz;
+    yy += o.yy;
+    yz += o.yz;
+    zz += o.zz;
+  }
+  Eigen::Vector3d first() const { return Eigen::Vector3d(x, y, z); }
+  Eigen::Matrix3d second() const {
+    Eigen::Matrix3d m;
+    m << xx, xy, xz, xy, yy, yz, xz, yz, zz;
+    return m;
+  }
+};
+
+// The fit below, cell by cell in any order (the extractor feeds all planes in one raster pass,
+// which reads the cloud sequentially instead of in region-growing order), then solved.
+class PlaneFitAccumulator {
+ public:
+  void reset(const ScatterSums& sums, const Eigen::Vector3d& normal_unweighted,
+             const PlaneNoiseModel& noise, const NeighbourBand& neighbours);
+  void add(const cv::Vec3f& p) { addRun(&p, 1); }
+  // count consecutive cells of this plane (a run of a row): summed in registers, then merged.
+  void addRun(const cv::Vec3f* p, int count) {
+    WeightedMoments sw, sa;
+    int fitted = 0;
+    for (int i = 0; i < count; ++i) {
+      if (neighbour_count_ > 0 && inNeighbourBand(p[i])) continue;
+      ++fitted;
+      const float kz = kf_ * p[i][2];
+      const double w = 1.0f / (kz * kz + floor2f_);  // weights need no double division
+      const double x = p[i][0] - origin_.x(), y = p[i][1] - origin_.y(), z = p[i][2] - origin_.z();
+      sw.add(x, y, z, w);
+      sa.add(x, y, z, w * kd2_ * p[i][2] * p[i][2]);
+    }
+    sw_.merge(sw);
+    sa_.merge(sa);
+    fitted_ += fitted;
+  }
+  // sums: the region's unweighted moments (rms); point_count: the region's cells.
+  bool solve(const ScatterSums& sums, int point_count, Plane* plane) const;
+
+ private:
+  bool inNeighbourBand(const cv::Vec3f& p) const;
+
+  static constexpr int kMaxNeighbours = 16;
+  Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();
+  Eigen::Vector3f n0_ = Eigen::Vector3f::UnitZ();
+  float d0_ = 0.0f;   // signed offset of the unweighted plane
+  float kd_ = 0.0f;   // sigma_d / (f B)
+  double k_ = 0.0;    // residual sigma = k Z
+  double kd2_ = 0.0;  // kd^2
+  double floor2_ = 0.0;
+  float kf_ = 0.0f;
+  float floor2f_ = 0.0f;
+  // Per neighbouring plane j, for the division-free band test: d0 n_j, d_j, and
+  // band_sigmas kd |d_j| |d0| (see inNeighbourBand).
+  int neighbour_count_ = 0;
+  float band_m_ = 0.0f;
+  std::array<Eigen::Vector3f, kMaxNeighbours> d0_n_{};
+  std::array<float, kMaxNeighbours> d_{};
+  std::array<float, kMaxNeighbours> sigma_coeff_{};
+  WeightedMoments sw_, sa_;  // weights w_i and a_i = w_i (k_d Z_i)^2
+  int fitted_ = 0;
+};
+
 bool fitPlaneWithUncertainty(const OrganizedCloud& cloud, const std::int32_t* cells, int count,
                              const ScatterSums& sums, const Eigen::Vector3d& normal_unweighted,
                              const PlaneNoiseModel& noise, Plane* plane,

@@ -28,19 +28,20 @@ bool PlaneRegionGrower::init(const PlaneExtractionConfig& config, double fx_px,
   seed_step_cells_ = std::max(1, config.seed_spacing_px / step_px);
   half_window_ = config.seed_window_cells / 2;
   labels_.create(rows, cols, CV_8UC1);
-  stamp_.assign(static_cast<size_t>(rows) * cols, 0u);
+  stamp_.assign(static_cast<size_t>(rows) * cols, std::uint8_t{0});
   attempt_ = 0;
   members_.assign(static_cast<size_t>(rows) * cols, 0);
   seeds_.assign(static_cast<size_t>(rows / seed_step_cells_ + 1) * (cols / seed_step_cells_ + 1),
                 Seed{});
   regions_.assign(config.max_planes, PlaneRegion{});
-  label_count_.assign(256, 0);
   return true;
 }
 
-std::uint32_t PlaneRegionGrower::nextAttempt() {
-  if (++attempt_ == 0) {  // wrapped after 2^32 attempts: forget every stamp once
-    std::fill(stamp_.begin(), stamp_.end(), 0u);
+// Stamps are bytes (a third of the memory traffic of ints); after 255 attempts they wrap and
+// are cleared once.
+std::uint8_t PlaneRegionGrower::nextAttempt() {
+  if (++attempt_ == 0) {
+    std::fill(stamp_.begin(), stamp_.end(), std::uint8_t{0});
     attempt_ = 1;
   }
   return attempt_;
@@ -95,11 +96,15 @@ bool PlaneRegionGrower::patchIsFree(const OrganizedCloud& /*cloud*/, int cell) c
 }
 
 int PlaneRegionGrower::grow(const OrganizedCloud& cloud) {
-  if (cloud.rows() != rows_ || cloud.cols() != cols_) return -1;
+  if (cloud.rows() != rows_ || cloud.cols() != cols_ || !cloud.p_point_in_cam_m.isContinuous()) {
+    return -1;
+  }
   labels_.setTo(cv::Scalar(0));
   member_end_ = 0;
   region_count_ = 0;
   seeds_tried_ = 0;
+  cells_admitted_ = 0;
+  for (auto& adjacent : adjacent_) adjacent.reset();
   const int seed_count = collectSeeds(cloud);
   for (int s = 0; s < seed_count && region_count_ < config_.max_planes; ++s) {
     if (!patchIsFree(cloud, seeds_[s].cell)) continue;
@@ -112,7 +117,6 @@ int PlaneRegionGrower::grow(const OrganizedCloud& cloud) {
       releaseRegion(region);
     }
   }
-  collectRegions(cloud);
   return region_count_;
 }
 
@@ -121,67 +125,6 @@ int PlaneRegionGrower::grow(const OrganizedCloud& cloud) {
 Eigen::Matrix3d PlaneRegionGrower::noiseScatter(const ScatterSums& sums, double sum_z2) const {
   const double kd2 = static_cast<double>(noise_per_z2_) * noise_per_z2_;
   return kd2 * (sum_z2 / sums.n) * sums.secondMoment();
-}
-
-// Cells, moments and boxes of every region from the label grid (a counting sort by label).
-void PlaneRegionGrower::collectRegions(const OrganizedCloud& cloud) {
-  std::fill(label_count_.begin(), label_count_.end(), 0);
-  const std::uint8_t* labels = labels_.ptr<std::uint8_t>(0);
-  const int n_cells = rows_ * cols_;
-  for (int cell = 0; cell < n_cells; ++cell) ++label_count_[labels[cell]];
-  int begin = 0;
-  for (int i = 0; i < region_count_; ++i) {
-    PlaneRegion& region = regions_[i];
-    region.member_begin = begin;
-    region.member_count = 0;
-    begin += label_count_[region.label];
-    region.sums.reset(region.sums.origin);
-    region.sum_z2 = 0.0;
-    region.bbox_cells = cv::Rect(cols_, rows_, 0, 0);
-    label_count_[region.label] = i;  // now: region index of the label
-  }
-  for (int i = 0; i < region_count_; ++i) adjacent_[regions_[i].label].reset();
-  int r_min[256], r_max[256], c_min[256], c_max[256];
-  for (int i = 0; i < region_count_; ++i) {
-    r_min[i] = rows_;
-    r_max[i] = -1;
-    c_min[i] = cols_;
-    c_max[i] = -1;
-  }
-  for (int r = 0; r < rows_; ++r) {
-    const cv::Vec3f* p = cloud.row(r);
-    for (int c = 0; c < cols_; ++c) {
-      const std::uint8_t l = labels[r * cols_ + c];
-      if (l == 0) continue;
-      const std::uint8_t right = c + 1 < cols_ ? labels[r * cols_ + c + 1] : 0;
-      const std::uint8_t down = r + 1 < rows_ ? labels[(r + 1) * cols_ + c] : 0;
-      if (right != 0 && right != l) {
-        adjacent_[l].set(right);
-        adjacent_[right].set(l);
-      }
-      if (down != 0 && down != l) {
-        adjacent_[l].set(down);
-        adjacent_[down].set(l);
-      }
-      const int i = label_count_[l];
-      PlaneRegion& region = regions_[i];
-      members_[region.member_begin + region.member_count++] = r * cols_ + c;
-      const Eigen::Vector3d& o = region.sums.origin;
-      region.sums.add(p[c][0] - o.x(), p[c][1] - o.y(), p[c][2] - o.z());
-      region.sum_z2 += static_cast<double>(p[c][2]) * p[c][2];
-      r_min[i] = std::min(r_min[i], r);
-      r_max[i] = std::max(r_max[i], r);
-      c_min[i] = std::min(c_min[i], c);
-      c_max[i] = std::max(c_max[i], c);
-    }
-  }
-  member_end_ = begin;
-  for (int i = 0; i < region_count_; ++i) {
-    PlaneRegion& region = regions_[i];
-    region.bbox_cells =
-        cv::Rect(c_min[i], r_min[i], c_max[i] - c_min[i] + 1, r_max[i] - r_min[i] + 1);
-    region.normal = fitPlane(region.sums, noiseScatter(region.sums, region.sum_z2)).normal;
-  }
 }
 
 void PlaneRegionGrower::releaseRegion(const PlaneRegion& region) {
@@ -194,25 +137,25 @@ void PlaneRegionGrower::releaseRegion(const PlaneRegion& region) {
 
 bool PlaneRegionGrower::growRegion(const OrganizedCloud& cloud, int seed_cell, std::uint8_t label,
                                    PlaneRegion* region) {
-  const std::uint32_t attempt = nextAttempt();
+  const std::uint8_t attempt = nextAttempt();
+  std::uint8_t* stamp = stamp_.data();
+  std::int32_t* members = members_.data();
+  int member_end = member_end_;
   std::uint8_t* labels = labels_.ptr<std::uint8_t>(0);  // continuous: created by init()
-  const cv::Vec3f* points = cloud.row(0);
-  const bool continuous = cloud.p_point_in_cam_m.isContinuous();
-  auto point = [&](int cell) -> const cv::Vec3f& {
-    return continuous ? points[cell] : cloud.row(cell / cols_)[cell % cols_];
-  };
-  const cv::Vec3f& seed = point(seed_cell);
+  const cv::Vec3f* points = cloud.row(0);               // continuous: checked by grow()
+  const cv::Vec3f& seed = points[seed_cell];
   const Eigen::Vector3d origin(seed[0], seed[1], seed[2]);
   ScatterSums& sums = region->sums;
   sums.reset(origin);
   region->member_begin = member_end_;
   region->label = label;
-  double sum_var = 0.0;  // sum of the members' noise variances
-  double sum_z2 = 0.0;   // sum of Z^2 of the members
+  std::bitset<256> touched;  // labels met at the border, committed when the region is kept
+  double sum_var = 0.0;      // sum of the members' noise variances
+  double sum_z2 = 0.0;       // sum of Z^2 of the members
   auto admit = [&](int cell, const cv::Vec3f& p, float sigma) {
     labels[cell] = label;
-    stamp_[cell] = attempt;
-    members_[member_end_++] = cell;
+    stamp[cell] = attempt;
+    members[member_end++] = cell;
     sums.add(p[0] - origin.x(), p[1] - origin.y(), p[2] - origin.z());
     sum_var += static_cast<double>(sigma) * sigma;
     sum_z2 += static_cast<double>(p[2]) * p[2];
@@ -221,25 +164,27 @@ bool PlaneRegionGrower::growRegion(const OrganizedCloud& cloud, int seed_cell, s
   for (int dr = -half_window_; dr <= half_window_; ++dr) {
     for (int dc = -half_window_; dc <= half_window_; ++dc) {
       const int cell = seed_cell + dr * cols_ + dc;
-      const cv::Vec3f& p = point(cell);
+      const cv::Vec3f& p = points[cell];
       admit(cell, p, noise_per_z2_ * p[2] * p[2]);
     }
   }
 
-  // Running sums along the current normal n: a = n . (p - origin).
-  // The fit removes the expected scatter of the stereo noise along the rays (see plane_fit.h),
-  // sum (k_d Z_i)^2 p_i p_i^T, approximated by k_d^2 mean(Z^2) sum p p^T: without it the normal
-  // of a patch tilts away from the viewing direction and the distance test, centred on that biased
-  // plane, keeps a biased sample.
-  Eigen::Vector3d n = fitPlane(sums, noiseScatter(sums, sum_z2)).normal;
-  double sum_a = 0.0, sum_aa = 0.0;
+  // Running sums along the current normal n: a = n . (p - origin). The fit removes the expected
+  // scatter of the stereo noise along the rays (noiseScatter): without it the normal of a patch
+  // tilts away from the viewing direction, and the distance test, centred on that biased plane,
+  // keeps a biased sample.
+  Eigen::Vector3d n;
+  double sum_a = 0.0, sum_aa = 0.0, mean_a = 0.0;
   float abs_d = 0.0f;  // |d| of the current plane, for the noise along the normal
+  Eigen::Vector3f nf;
   auto refit = [&]() {
     n = fitPlane(sums, noiseScatter(sums, sum_z2)).normal;
+    nf = n.cast<float>();
     abs_d = static_cast<float>(std::abs(n.dot(sums.mean())));
     sum_a = n.x() * sums.sx + n.y() * sums.sy + n.z() * sums.sz;
     sum_aa = n.x() * n.x() * sums.sxx + n.y() * n.y() * sums.syy + n.z() * n.z() * sums.szz +
              2.0 * (n.x() * n.y() * sums.sxy + n.x() * n.z() * sums.sxz + n.y() * n.z() * sums.syz);
+    mean_a = sum_a / sums.n;
   };
   refit();
   double next_refit = sums.n * config_.refit_growth;
@@ -247,67 +192,105 @@ bool PlaneRegionGrower::growRegion(const OrganizedCloud& cloud, int seed_cell, s
   const double k_sigma = config_.distance_sigmas;
   const double max_mse = config_.max_mse_m2;
 
-  // Local normal of the cell at (r, c) against the region's normal; true when it agrees or
-  // cannot be computed.
-  auto localNormalAgrees = [&](int cell, int r, int c, const cv::Vec3f& p) {
+  // Local normal of the cell at (r, c) against the region's normal; true when it agrees or cannot
+  // be computed. Tested on one colour of a checkerboard only: a leak along an intersection line
+  // cannot pass two 4-neighbours in a row unchecked, and the test costs half.
+  auto localNormalAgrees = [&](int cell, int r, int c, const cv::Vec3f& p)
+      __attribute__((always_inline)) {
+    if (((r + c) & 1) != 0) return true;
     const int k = std::clamp(static_cast<int>(normal_span_cells_m_ / p[2] + 0.5f), 1, 8);
     if (r < k || c < k || r + k >= rows_ || c + k >= cols_) return true;
-    const cv::Vec3f& left = point(cell - k);
-    const cv::Vec3f& right = point(cell + k);
-    const cv::Vec3f& up = point(cell - k * cols_);
-    const cv::Vec3f& down = point(cell + k * cols_);
+    const cv::Vec3f& left = points[cell - k];
+    const cv::Vec3f& right = points[cell + k];
+    const cv::Vec3f& up = points[cell - k * cols_];
+    const cv::Vec3f& down = points[cell + k * cols_];
     if (!OrganizedCloud::isValid(left) || !OrganizedCloud::isValid(right) ||
         !OrganizedCloud::isValid(up) || !OrganizedCloud::isValid(down)) {
       return true;
     }
     const cv::Vec3f local = (right - left).cross(down - up);
-    const float dot = static_cast<float>(n.x()) * local[0] + static_cast<float>(n.y()) * local[1] +
-                      static_cast<float>(n.z()) * local[2];
+    const float dot = nf.x() * local[0] + nf.y() * local[1] + nf.z() * local[2];
     return dot * dot >= cos2_normal_ * local.dot(local);
   };
 
-  auto consider = [&](int cell, int r, int c) {
-    if (stamp_[cell] == attempt || labels[cell] != 0) return;
-    stamp_[cell] = attempt;
-    const cv::Vec3f& p = point(cell);
+  // Inlined into the queue loop (four call sites): a call per candidate is measurable here.
+  auto consider = [&](int cell, int r, int c) __attribute__((always_inline)) {
+    if (stamp[cell] == attempt) return;
+    if (labels[cell] != 0) {
+      touched.set(labels[cell]);
+      return;
+    }
+    stamp[cell] = attempt;
+    const cv::Vec3f& p = points[cell];
     if (!OrganizedCloud::isValid(p)) return;
     const double a =
         n.x() * (p[0] - origin.x()) + n.y() * (p[1] - origin.y()) + n.z() * (p[2] - origin.z());
     // Depth noise seen along the normal: sigma_Z |d| / Z (see PlaneNoiseModel).
     const float sigma = noise_per_z2_ * p[2] * abs_d;
     // (1) distance to the plane through the current centroid
-    if (std::abs(a - sum_a / sums.n) > gamma + k_sigma * sigma) return;
+    if (std::abs(a - mean_a) > gamma + k_sigma * sigma) return;
     // (1b) the surface around the cell faces the same way
     if (!localNormalAgrees(cell, r, c, p)) return;
-    // (2) MSE of the region with the candidate, beyond the mean noise variance
+    // (2) MSE of the region with the candidate, beyond the mean noise variance:
+    // (s2 - s1^2 / n1) / n1 > max_mse + var / n1, multiplied out by n1^2
     const double n1 = sums.n + 1.0;
     const double s1 = sum_a + a;
     const double s2 = sum_aa + a * a;
-    const double var_noise = (sum_var + static_cast<double>(sigma) * sigma) / n1;
-    if ((s2 - s1 * s1 / n1) / n1 > max_mse + var_noise) return;
+    const double var = sum_var + static_cast<double>(sigma) * sigma;
+    if (s2 * n1 - s1 * s1 > (max_mse * n1 + var) * n1) return;
     admit(cell, p, sigma);
     sum_a = s1;
     sum_aa = s2;
+    mean_a = s1 / n1;
     if (sums.n >= next_refit) {
       refit();
       next_refit = sums.n * config_.refit_growth;
     }
   };
 
-  for (int head = region->member_begin; head < member_end_; ++head) {
-    const int cell = members_[head];
-    const int r = cell / cols_;
+  int r_min = rows_, r_max = -1, c_min = cols_, c_max = -1;
+  // Row of a cell by multiplication: an integer division per cell costs more than the tests.
+  const double inv_cols = 1.0 / cols_;
+  constexpr int kPrefetchAhead = 8;
+  for (int head = region->member_begin; head < member_end; ++head) {
+    const int cell = members[head];
+    // The local normal test reads rows +-k around the candidates: fetch them for a cell a few
+    // places ahead in the queue, so the loads do not stall (they miss L1 at full resolution).
+    if (head + kPrefetchAhead < member_end) {
+      const int ahead = members[head + kPrefetchAhead];
+      const int k =
+          std::clamp(static_cast<int>(normal_span_cells_m_ / points[ahead][2] + 0.5f), 1, 8);
+      const int lo = std::max(0, ahead - (k + 1) * cols_);
+      const int hi = std::min(rows_ * cols_ - 1, ahead + (k + 1) * cols_);
+      __builtin_prefetch(&points[lo]);
+      __builtin_prefetch(&points[hi]);
+      __builtin_prefetch(&points[std::max(0, ahead - k * cols_)]);
+      __builtin_prefetch(&points[std::min(rows_ * cols_ - 1, ahead + k * cols_)]);
+    }
+    const int r = static_cast<int>((cell + 0.5) * inv_cols);
     const int c = cell - r * cols_;
+    r_min = std::min(r_min, r);
+    r_max = std::max(r_max, r);
+    c_min = std::min(c_min, c);
+    c_max = std::max(c_max, c);
     if (c > 0) consider(cell - 1, r, c - 1);
     if (c + 1 < cols_) consider(cell + 1, r, c + 1);
     if (r > 0) consider(cell - cols_, r - 1, c);
     if (r + 1 < rows_) consider(cell + cols_, r + 1, c);
   }
+  member_end_ = member_end;
   region->member_count = member_end_ - region->member_begin;
+  cells_admitted_ += region->member_count;
   if (region->member_count < min_cells_) return false;
   refit();
   region->normal = n;
   region->sum_z2 = sum_z2;
+  region->bbox_cells = cv::Rect(c_min, r_min, c_max - c_min + 1, r_max - r_min + 1);
+  touched.reset(label);
+  adjacent_[label] = touched;
+  for (int l = 1; l < 256; ++l) {
+    if (touched.test(l)) adjacent_[l].set(label);
+  }
   return true;
 }
 

@@ -31,8 +31,8 @@ struct PlaneRegion {
 // (between fits, distance and MSE are O(1) running sums along the fixed normal:
 // MSE = (sum a^2 - (sum a)^2 / N) / N with a = n . (p - origin)), and both thresholds grow with
 // the depth noise sigma_Z = Z^2 sigma_d / (f B). A region smaller than the minimum releases its
-// cells. Finally each region's cells, moments, box and neighbouring labels are collected from
-// the label grid in one pass. All buffers are sized in init().
+// cells. A third test, on the local surface normal, keeps regions from leaking along the line
+// where their plane cuts another surface. All buffers are sized in init().
 class PlaneRegionGrower {
  public:
   // fx_px, focal_baseline_pxm = fx * B: the stereo rig; rows, cols, step_px: the cloud grid.
@@ -46,6 +46,8 @@ class PlaneRegionGrower {
   const std::int32_t* members() const { return members_.data(); }
   int regionCount() const { return region_count_; }
   int seedsTried() const { return seeds_tried_; }
+  // Cells admitted over all attempts of the last grow(), kept or released (the work done).
+  long cellsAdmitted() const { return cells_admitted_; }
   // Labels whose cells touch label l's cells (4-neighbourhood).
   const std::bitset<256>& adjacentLabels(std::uint8_t l) const { return adjacent_[l]; }
 
@@ -59,9 +61,8 @@ class PlaneRegionGrower {
   bool growRegion(const OrganizedCloud& cloud, int seed_cell, std::uint8_t label,
                   PlaneRegion* region);
   void releaseRegion(const PlaneRegion& region);
-  void collectRegions(const OrganizedCloud& cloud);
   Eigen::Matrix3d noiseScatter(const ScatterSums& sums, double sum_z2) const;
-  std::uint32_t nextAttempt();
+  std::uint8_t nextAttempt();
 
   PlaneExtractionConfig config_;
   float noise_per_z2_ = 0.0f;         // sigma_Z / Z^2 = sigma_d / (f B)
@@ -73,15 +74,15 @@ class PlaneRegionGrower {
   int seed_step_cells_ = 1;
   int half_window_ = 2;
   cv::Mat labels_;
-  std::vector<std::uint32_t> stamp_;  // attempt that last examined a cell
-  std::uint32_t attempt_ = 0;
+  std::vector<std::uint8_t> stamp_;  // attempt that last examined a cell
+  std::uint8_t attempt_ = 0;
   std::vector<std::int32_t> members_;  // also the breadth-first queue
   int member_end_ = 0;
   std::vector<Seed> seeds_;
   std::vector<PlaneRegion> regions_;
   int region_count_ = 0;
   int seeds_tried_ = 0;
-  std::vector<std::int32_t> label_count_;
+  long cells_admitted_ = 0;
   std::array<std::bitset<256>, 256> adjacent_{};
 };
 
