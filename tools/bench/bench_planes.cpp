@@ -207,6 +207,24 @@ void BM_WorkspaceFilter(benchmark::State& state) {
   state.counters["removed"] = removed;
   state.counters["points"] = points;
   state.counters["voxels"] = static_cast<double>(s.map.occupiedVoxelCount());
+  state.counters["grid_kib"] = static_cast<double>(s.map.gridLookup().memoryBytes()) / 1024.0;
+}
+
+// Stage 1: one cloud (2-px grid, every cell) into the octree, ray-free (Arg 0) or ray casting
+// (Arg 1, octomap insertPointCloud with discretised rays).
+void BM_WorkspaceInsert(benchmark::State& state) {
+  Setup& s = setup();
+  if (!s.ok) state.SkipWithError("setup");
+  WorkspaceConfig wc;
+  wc.insert_step_cells = 1;
+  wc.insert_mode =
+      state.range(0) == 0 ? WorkspaceInsertMode::kEndpoints : WorkspaceInsertMode::kRayCast;
+  WorkspaceMap map;
+  if (!map.init(wc)) state.SkipWithError("init");
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(map.insert(s.cloud_a_half, kTworldA));
+  }
+  state.SetItemsProcessed(state.iterations() * s.cloud_a_half.countValid());
 }
 
 void BM_PlaneExtraction(benchmark::State& state) {
@@ -291,6 +309,12 @@ BENCHMARK(BM_MixedPixelFilter)
 BENCHMARK(BM_WorkspaceFilter)
     ->ArgsProduct({{0, 1, 2}, {1, 2}})
     ->ArgNames({"lookup", "step"})
+    ->Unit(benchmark::kMillisecond)
+    ->ComputeStatistics("min", minimum);
+BENCHMARK(BM_WorkspaceInsert)
+    ->Arg(0)
+    ->Arg(1)
+    ->ArgName("raycast")
     ->Unit(benchmark::kMillisecond)
     ->ComputeStatistics("min", minimum);
 BENCHMARK(BM_PlaneExtraction)
