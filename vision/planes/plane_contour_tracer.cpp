@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace deepnav {
 namespace {
@@ -92,7 +93,8 @@ bool PlaneContourTracer::trace(const cv::Mat& labels, const int* plane_of_label,
   if (labels.rows != rows_ || labels.cols != cols_ || labels.type() != CV_8UC1 || set == nullptr) {
     return false;
   }
-  marks_.setTo(cv::Scalar(0));
+  // memset rather than Mat::setTo, which allocates (marks_ is continuous: created in init()).
+  std::memset(marks_.data, 0, marks_.total());
   for (int r = 0; r < rows_; ++r) {
     const std::uint8_t* l = labels.ptr<std::uint8_t>(r);
     const std::int8_t* m = marks_.ptr<std::int8_t>(r);

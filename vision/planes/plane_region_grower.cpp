@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace deepnav {
 
@@ -99,7 +100,8 @@ int PlaneRegionGrower::grow(const OrganizedCloud& cloud) {
   if (cloud.rows() != rows_ || cloud.cols() != cols_ || !cloud.p_point_in_cam_m.isContinuous()) {
     return -1;
   }
-  labels_.setTo(cv::Scalar(0));
+  // memset rather than Mat::setTo, which allocates (labels_ is continuous: created in init()).
+  std::memset(labels_.data, 0, labels_.total());
   member_end_ = 0;
   region_count_ = 0;
   seeds_tried_ = 0;
