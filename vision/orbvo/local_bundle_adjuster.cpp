@@ -42,10 +42,11 @@ bool LocalBundleAdjuster::init(int max_cameras, int max_points, int max_observat
   t_backup_.resize(max_cameras);
   u_.resize(max_cameras);
   b_c_.resize(max_cameras);
-  reduced_.setZero(6 * max_cameras, 6 * max_cameras);
   rhs_.setZero(6 * max_cameras);
   dc_.setZero(6 * max_cameras);
-  ldlt_ = Eigen::LDLT<Eigen::MatrixXd>(6 * max_cameras);
+  // Sizes the factorisation's storage (LDLT's size constructor leaves its status unset: no copy).
+  reduced_.setIdentity(6 * max_cameras, 6 * max_cameras);
+  ldlt_.compute(reduced_);
   return true;
 }
 
