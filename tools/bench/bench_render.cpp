@@ -6,6 +6,7 @@
 #include <string>
 
 #include "tools/sim/render/stereo_renderer.h"
+#include "tools/sim/render/view_tick.h"
 #include "tools/sim/sensor_simulator.h"
 
 namespace {
@@ -13,6 +14,23 @@ namespace {
 using deepnav::sim::Scenario;
 using deepnav::sim::SensorSimulator;
 using deepnav::sim::StereoRenderer;
+
+void renderTick(benchmark::State& state, const Scenario& scenario, const deepnav::CameraTick& tick, int channels) {
+  std::string error;
+  StereoRenderer renderer;
+  if (!renderer.init(scenario, 1, channels, &error)) {
+    state.SkipWithError(error.c_str());
+    return;
+  }
+  deepnav::StereoFrame frame;
+  deepnav::allocateStereoFrame(frame, scenario.camera.width_px, scenario.camera.height_px, channels);
+  deepnav::sim::RenderTruth truth;
+  renderer.allocateTruth(&truth);
+  for (auto _ : state) {
+    renderer.render(tick, &frame, &truth);
+    benchmark::DoNotOptimize(frame.left.data);
+  }
+}
 
 void renderPair(benchmark::State& state, double t_s, int channels, int fish) {
   Scenario scenario;
@@ -42,6 +60,12 @@ void BM_RenderApproachGrey(benchmark::State& s) { renderPair(s, 12.0, 1, 0); }
 void BM_RenderDwellBgr(benchmark::State& s) { renderPair(s, 36.0, 3, 0); }
 void BM_RenderCornerGreyWithFish(benchmark::State& s) { renderPair(s, 57.0, 1, 8); }
 
+// The worst case for the seabed march: 3 m from the front face, pitched 35 deg down, mostly seabed.
+void BM_RenderSeabedGrey(benchmark::State& s) {
+  const Scenario scenario;
+  renderTick(s, scenario, deepnav::sim::tickFacingFace(scenario, 1, 3.0, -0.15, 1.3, 0.0, 35.0), 1);
+}
+
 void BM_RendererInit(benchmark::State& state) {
   const Scenario scenario;
   std::string error;
@@ -56,6 +80,7 @@ BENCHMARK(BM_RenderCornerGrey)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RenderApproachGrey)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RenderDwellBgr)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RenderCornerGreyWithFish)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RenderSeabedGrey)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RendererInit)->Unit(benchmark::kMillisecond);
 
 }  // namespace

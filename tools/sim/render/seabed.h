@@ -1,4 +1,5 @@
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -19,7 +20,9 @@ class Seabed {
   // Nearest hit of o + t d (P) with t in (t_min, t_max): the ray is marched through the slab
   // [min height, max height] with horizontal steps of the larger of 6 cm, 1 % of the range (a pixel
   // covers more than that far away) and the gap to the relief over the closing rate (a step that
-  // cannot cross it), then the crossing is refined by regula falsi.
+  // cannot cross it), then the crossing is refined by Newton steps inside the bracket. A ray descending
+  // faster than the steepest relief slope crosses it once: its slab entry and exit go straight to the
+  // refinement.
   // Outside the relief square the plane z = 0 is hit analytically.
   bool intersect(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t_min, float t_max, float* t) const;
 
@@ -31,23 +34,56 @@ class Seabed {
 
  private:
   bool march(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t0, float t1, float* t) const;
-  bool refine(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float lo, float flo, float hi, float fhi,
-              float* t) const;
+  bool refine(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float lo, float hi, float start, float* t) const;
   float sampleHeight(float x_m, float y_m) const;
-  float above(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t) const;  // ray z - h
+  // Height and its exact slope (of the bilinear patch) at (x, y).
+  void sampleHeightAndSlope(float x_m, float y_m, float* h, float* hx, float* hy) const;
+  float above(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t) const {  // ray z - h
+    return o.z() + t * d.z() - sampleHeight(o.x() + t * d.x(), o.y() + t * d.y());
+  }
   void paintTexture(std::uint32_t seed);
 
   static constexpr float kHalfExtent_m = 9.6f;  // relief grid covers [-9.6, 9.6]^2
   static constexpr float kCell_m = 0.08f;  // 241 x 241 nodes: heights and slopes stay in L2 cache
+  static constexpr float kInvCell = 12.5f;  // 1 / kCell_m: a multiply, not a division, per sample
   static constexpr float kTexturePeriod_m = 6.4f;
   static constexpr int kTextureTexels = 1024;
   int nodes_ = 0;                // per axis
   std::vector<float> height_m_;  // row-major, y rows
-  std::vector<Eigen::Vector2f> slope_;  // (dh/dx, dh/dy) per node, central differences
   float max_slope_ = 0.0f;  // bound on |grad h|, for safe march steps
   float min_height_m_ = 0.0f;
   float max_height_m_ = 0.0f;
   TextureMap texture_;
 };
+
+// Inline: the march calls these a few times per pixel.
+inline float Seabed::sampleHeight(float x_m, float y_m) const {
+  const float gx = (x_m + kHalfExtent_m) * kInvCell, gy = (y_m + kHalfExtent_m) * kInvCell;
+  if (!(gx >= 0.0f && gy >= 0.0f && gx < nodes_ - 1 && gy < nodes_ - 1)) return 0.0f;
+  const int ix = static_cast<int>(gx), iy = static_cast<int>(gy);
+  const float ax = gx - ix, ay = gy - iy;
+  const float* r0 = &height_m_[static_cast<std::size_t>(iy) * nodes_ + ix];
+  const float* r1 = r0 + nodes_;
+  const float a = r0[0] + ax * (r0[1] - r0[0]);
+  const float b = r1[0] + ax * (r1[1] - r1[0]);
+  return a + ay * (b - a);
+}
+
+inline void Seabed::sampleHeightAndSlope(float x_m, float y_m, float* h, float* hx, float* hy) const {
+  const float gx = (x_m + kHalfExtent_m) * kInvCell, gy = (y_m + kHalfExtent_m) * kInvCell;
+  if (!(gx >= 0.0f && gy >= 0.0f && gx < nodes_ - 1 && gy < nodes_ - 1)) {
+    *h = *hx = *hy = 0.0f;
+    return;
+  }
+  const int ix = static_cast<int>(gx), iy = static_cast<int>(gy);
+  const float ax = gx - ix, ay = gy - iy;
+  const float* r0 = &height_m_[static_cast<std::size_t>(iy) * nodes_ + ix];
+  const float* r1 = r0 + nodes_;
+  const float a = r0[0] + ax * (r0[1] - r0[0]);
+  const float b = r1[0] + ax * (r1[1] - r1[0]);
+  *h = a + ay * (b - a);
+  *hx = ((1.0f - ay) * (r0[1] - r0[0]) + ay * (r1[1] - r1[0])) * kInvCell;
+  *hy = (b - a) * kInvCell;
+}
 
 }  // namespace deepnav::sim

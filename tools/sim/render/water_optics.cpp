@@ -18,8 +18,8 @@ WaterOptics waterOptics(WaterPreset preset) {
       w.shot_noise = 2.0e-4f;
       break;
     case WaterPreset::kModerate:
-      w.attenuation_per_m = {0.50f, 0.45f, 0.80f};
-      w.backscatter = {0.050f, 0.060f, 0.015f};
+      w.attenuation_per_m = {0.40f, 0.35f, 0.70f};
+      w.backscatter = {0.025f, 0.030f, 0.008f};
       w.lamp_intensity = 0.87f;
       w.read_noise = 0.0025f;
       w.shot_noise = 3.0e-4f;
