@@ -186,6 +186,26 @@ TEST(SimRenderImage, VisibleMarkersFollowTheView) {
   EXPECT_TRUE(render(renderer, tickFacingFace(s, 0, 1.5, 1.6, 1.0, 90.0)).truth.visible_marker_ids.empty());
 }
 
+TEST(SimRenderImage, PanelPlacedWhereTheScenarioPutsIt) {
+  // GIVEN a panel moved off the odometry origin, yawed, on a seabed 2 m below the origin
+  Scenario s;
+  s.panel.centre_in_odom_m = {5.0, -3.0};
+  s.panel.front_yaw_deg = 30.0;
+  s.environment.odom_origin_depth_m = 998.0;
+  s.trajectory.start_depth_m = 996.0;
+  s.trajectory.circle_depth_m = 996.5;
+  StereoRenderer renderer;
+  std::string error;
+  ASSERT_TRUE(renderer.init(s, 1, 1, &error)) << error;
+  // WHEN the rig faces the grasping face from 1.5 m (ticks built in odom through panelPoseInOdom)
+  // THEN its four markers are visible, and bare paint (between the left handle and the markers) is
+  // 1.5 m away along the optical axis
+  EXPECT_EQ(render(renderer, tickFacingFace(s, 1, 1.5, -0.15, 1.3)).truth.visible_marker_ids,
+            (std::vector<int>{4, 5, 6, 7}));
+  const Rendered r = render(renderer, tickFacingFace(s, 1, 1.5, -0.3, 1.25));
+  EXPECT_NEAR(r.truth.depth_m.at<float>(258, 344), 1.5f, 1e-4f);
+}
+
 TEST(SimRenderImage, SameSeedSameImagesOtherSeedOtherTextures) {
   const Scenario s;
   const CameraTick tick = tickFacingFace(s, 0, 1.5, -0.15, 1.3, 0.0, 20.0);
