@@ -25,20 +25,22 @@ ReplaySummary replay(const std::string& input, const std::string& out, const std
 
 class ReplayTest : public ::testing::Test {
  protected:
-  static void SetUpTestSuite() { dive_ = testing::makeTestDive("replay_dive", 30.0); }
+  static void SetUpTestSuite() { dive_ = testing::makeTestDive("replay_dive", 15.0); }
   static std::string dive_;
 };
 std::string ReplayTest::dive_;
 
 TEST_F(ReplayTest, SensorLogRunsTheLoopAtItsRate) {
-  // GIVEN a 30 s simulated sensor log WHEN it is replayed THEN the loop ticks at 100 Hz over it, consumes
-  // every sensor sample and writes trajectory, truth and summary
+  // GIVEN a 15 s simulated sensor log WHEN it is replayed THEN the loop ticks at 100 Hz over it, consumes
+  // every sensor sample and every stereo pair, and writes trajectory, truth and summary
   const std::string out = ::testing::TempDir() + "replay_a";
   const ReplaySummary s = replay(dive_, out);
   EXPECT_FALSE(s.reproduce);
-  EXPECT_NEAR(static_cast<double>(s.ticks), 3000.0, 2.0);
-  EXPECT_NEAR(static_cast<double>(s.inputs.imu), 3001.0, 1.0);
-  EXPECT_GT(s.inputs.dvl, 140u);
+  EXPECT_NEAR(static_cast<double>(s.ticks), 1500.0, 2.0);
+  EXPECT_NEAR(static_cast<double>(s.inputs.imu), 1501.0, 1.0);
+  EXPECT_GT(s.inputs.dvl, 70u);
+  EXPECT_EQ(s.frames, 151u);
+  EXPECT_GT(s.inputs.vision, 140u);
   EXPECT_GT(s.inputs.accepted, 0u);
   EXPECT_TRUE(s.has_truth);
   EXPECT_TRUE(std::filesystem::exists(out + "/trajectory.tum"));
@@ -76,8 +78,8 @@ TEST_F(ReplayTest, RecordingCutOffMidWriteReplaysUpToItsLastCompleteChunk) {
   std::filesystem::resize_file(cut, size * 6 / 10);
   const ReplaySummary s = replay(cut, ::testing::TempDir() + "replay_cut");
   EXPECT_FALSE(s.warnings.empty());
-  EXPECT_GT(s.dive_s, 30.0 * 0.6 - 2.5);
-  EXPECT_LT(s.dive_s, 30.0 * 0.6 + 0.5);
+  EXPECT_GT(s.dive_s, 15.0 * 0.6 - 2.5);
+  EXPECT_LT(s.dive_s, 15.0 * 0.6 + 0.5);
 }
 
 TEST(Replay, MissingOrGarbageFileGivesAClearError) {

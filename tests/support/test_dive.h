@@ -1,4 +1,6 @@
 #pragma once
+#include <unistd.h>
+
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -13,7 +15,8 @@ namespace deepnav::testing {
 // Writes a simulated dive of the default scenario shortened to duration_s, and returns its path.
 inline std::string makeTestDive(const std::string& name, double duration_s, std::uint64_t seed = 7,
                                 bool render = true) {
-  const std::string dir = ::testing::TempDir();
+  // ctest runs test cases as parallel processes: each writes its own files.
+  const std::string dir = ::testing::TempDir() + "deepnav_" + std::to_string(::getpid()) + "_";
   std::ifstream in(std::string(DEEPNAV_SOURCE_DIR) + "/tools/sim/scenarios/default.yaml");
   std::stringstream text;
   text << in.rdbuf();
