@@ -17,8 +17,6 @@ const std::array kBoardParams = {
       DEEPNAV_FIELD(loop.rate_hz)},
     P{"loop.budget_us", ParamType::kInt, "us", 100, 100000, "2000", "",
       "time budget of one nav tick; a longer tick counts as an overrun", DEEPNAV_FIELD(loop.budget_us)},
-    P{"loop.output_rate_hz", ParamType::kInt, "Hz", 1, 1000, "50", "",
-      "rate at which NavSolution is published to the outputs", DEEPNAV_FIELD(loop.output_rate_hz)},
     P{"loop.vision_budget_us", ParamType::kInt, "us", 1000, 5000000, "100000", "",
       "vision worker budget per stereo pair; longer counts as a vision overrun",
       DEEPNAV_FIELD(loop.vision_budget_us)},

@@ -16,7 +16,6 @@ struct BoardConfig {
   struct Loop {
     int rate_hz;             // nav loop tick rate
     int budget_us;           // nav tick time budget; longer ticks count as overruns
-    int output_rate_hz;      // NavSolution publication rate
     int vision_budget_us;    // vision worker budget per frame
     int vision_latency_ms;   // replay: when a frame's vision result becomes available after capture
     double late_tick_tolerance;  // a tick later than this fraction of the period counts as late

@@ -10,7 +10,6 @@ namespace deepnav {
 
 bool LiveLoop::init(const VehicleSetup& setup, const std::string& recording_path, std::string* error) {
   const BoardConfig& c = setup.config;
-  config_ = c;
   LiveInputCapacities caps;
   caps.imu = static_cast<std::size_t>(c.buffers.imu);
   caps.dvl = static_cast<std::size_t>(c.buffers.dvl);

@@ -51,7 +51,6 @@ class LiveLoop {
   bool consumeOldest(TimeUs t_us);
   void publish(const NavSolution& s);
 
-  BoardConfig config_{};
   LiveInputs inputs_;
   SpscRing<VisionResult> vision_results_;
   QueuedRecorder recorder_;

@@ -39,7 +39,6 @@ struct BenchRun {
   int vision_task = 0;
   TimeUs next_tick_us = 0;
   bool ticking = false;
-  std::uint64_t tick_index = 0;
   ReplaySummary* summary = nullptr;
   TimeUs first_us = 0;
   TimeUs last_us = 0;
@@ -87,7 +86,6 @@ void tickAt(BenchRun* run, TimeUs t_us) {
   // Before alignment the filter has no attitude: those epochs are neither a trajectory nor scored.
   if (s.stage != NavStage::kInit) run->summary->estimate.push_back({usToS(s.t_us), s.p_robot_in_odom_m, s.q_odom_robot});
   ++run->summary->ticks;
-  ++run->tick_index;
 }
 
 // Raw sensor log: synthesise the loop's ticks on the recording clock.
