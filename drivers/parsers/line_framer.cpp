@@ -1,0 +1,55 @@
+#include "drivers/parsers/line_framer.h"
+
+namespace deepnav {
+
+bool LineFramer::init(std::string_view start_chars, size_t max_line_bytes, bool restart_on_start) {
+  restart_on_start_ = restart_on_start;
+  if (start_chars.empty() || max_line_bytes < 4) return false;
+  start_chars_ = start_chars;
+  max_line_ = max_line_bytes;
+  pending_ = 0;
+  return buffer_.init(max_line_bytes + 2 + 4096);
+}
+
+void LineFramer::flushPending() {
+  buffer_.consume(pending_);
+  pending_ = 0;
+}
+
+FrameStatus LineFramer::skip(size_t n, const char* reason, FrameError* error) {
+  *error = {buffer_.offset(), n, reason};
+  buffer_.consume(n);
+  return FrameStatus::kBad;
+}
+
+FrameStatus LineFramer::next(RawFrame* frame, FrameError* error) {
+  flushPending();
+  const uint8_t* d = buffer_.data();
+  const size_t size = buffer_.size();
+  size_t start = 0;
+  // Blank line ends and whitespace between lines are not errors.
+  while (start < size && (d[start] == '\r' || d[start] == '\n' || d[start] == ' ')) ++start;
+  if (start > 0) {
+    buffer_.consume(start);
+    return next(frame, error);
+  }
+  while (start < size && !isStart(d[start])) ++start;
+  if (start > 0) return skip(start, "bytes outside a sentence", error);
+  if (size == 0) return FrameStatus::kNeedMore;
+  for (size_t i = 1; i < size; ++i) {
+    const uint8_t c = d[i];
+    if (c == '\n') {
+      const size_t len = (i > 1 && d[i - 1] == '\r') ? i - 1 : i;
+      if (len > max_line_) return skip(i + 1, "line too long", error);
+      *frame = {buffer_.offset(), d, len};
+      pending_ = i + 1;
+      return FrameStatus::kFrame;
+    }
+    if (i >= max_line_ + 1) return skip(i, "line too long", error);
+    if (restart_on_start_ && isStart(c)) return skip(i, "sentence cut short by a new start character", error);
+    if ((c < 0x20 && c != '\r' && c != '\t') || c >= 0x7F) return skip(i + 1, "non-ASCII byte in a sentence", error);
+  }
+  return FrameStatus::kNeedMore;
+}
+
+}  // namespace deepnav
