@@ -34,7 +34,9 @@ FrameStatus LineFramer::next(RawFrame* frame, FrameError* error) {
     return next(frame, error);
   }
   while (start < size && !isStart(d[start])) ++start;
-  if (start > 0) return skip(start, "bytes outside a sentence", error);
+  // Noise is reported in one piece, once the next sentence starts (or the window is full).
+  if (start > 0 && (start < size || buffer_.full())) return skip(start, "bytes outside a sentence", error);
+  if (start > 0) return FrameStatus::kNeedMore;
   if (size == 0) return FrameStatus::kNeedMore;
   for (size_t i = 1; i < size; ++i) {
     const uint8_t c = d[i];

@@ -28,7 +28,10 @@ int splitFields(std::string_view s, std::array<std::string_view, 8>* f) {
   int n = 0;
   while (n < 8) {
     const size_t c = s.find(',');
-    (*f)[n++] = s.substr(0, c);
+    std::string_view field = s.substr(0, c);
+    while (!field.empty() && field.front() == ' ') field.remove_prefix(1);  // PD6 pads fields to fixed width
+    while (!field.empty() && field.back() == ' ') field.remove_suffix(1);
+    (*f)[n++] = field;
     if (c == std::string_view::npos) return n;
     s = s.substr(c + 1);
   }
