@@ -5,7 +5,6 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "board/cli/calibrate_command.h"
 #include "board/cli/decode_command.h"
 #include "board/cli/stereo_command.h"
 #include "board/config/board_config.h"
@@ -100,32 +99,6 @@ int main(int argc, char** argv) {
   cf->add_option("board", board_path, "board.yaml to validate");
   cf->add_flag("--list", list, "print every parameter with unit, default and range (Markdown)");
 
-  CLI11_PARSE(app, argc, argv);
-  if (*rp) {
-    replay.realtime = realtime;
-    return runReplay(replay);
-  }
-  deepnav::ServiceOptions run;
-  bool validate_only = false;
-  auto* rn = app.add_subcommand("run", "the vehicle service: validate the board, then run loop, vision, outputs, recording");
-  rn->add_option("--board", run.board_path, "board file")->required();
-  rn->add_option("--replay", run.replay_path, "recording to play as the sensors (overrides sources.replay_path)");
-  rn->add_option("--record", run.recording_path, "recording file (overrides service.recording_dir)");
-  rn->add_flag("--no-record", run.no_recording, "do not record");
-  rn->add_option("--duration", run.duration_s, "stop after this many seconds (default: on SIGTERM or end of replay)")
-      ->check(CLI::PositiveNumber);
-  rn->add_flag("--validate", validate_only, "validate the board (files, devices, outputs) and exit");
-
-  deepnav::CalibrateCommandOptions calibrate;
-  auto* cb = app.add_subcommand("calibrate", "stereo calibration from ChArUco views (images or a recording)");
-  cb->add_option("--target", calibrate.target_path, "target.yaml (vision/calib/README.md)")
-      ->required()
-      ->check(CLI::ExistingFile);
-  cb->add_option("inputs", calibrate.inputs, "image files (*left*/*right*), folders of them, or .mcap recordings")
-      ->required();
-  cb->add_option("--out", calibrate.out_path, "calibration file to write (OpenCV YAML)");
-  cb->add_option("--every", calibrate.every, "recordings: use every N-th stereo pair")->check(CLI::Range(1, 100000));
-
   std::string decode_format, decode_path;
   auto* dc = app.add_subcommand("decode", "decode a sensor capture: one JSON object per message (SI units) on stdout");
   dc->add_option("format", decode_format, "pd0 | pd6 | wl-a50 | nmea0183 | n2k-candump | xsens")
@@ -133,13 +106,17 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"pd0", "pd6", "wl-a50", "nmea0183", "n2k-candump", "xsens"}));
   dc->add_option("file", decode_path, "capture file")->required()->check(CLI::ExistingFile);
 
+  CLI11_PARSE(app, argc, argv);
+  if (*rp) {
+    replay.realtime = realtime;
+    return runReplay(replay);
+  }
+  if (*dc) return deepnav::runDecodeCommand(decode_format, decode_path);
   if (*iq) return runIqa(iqa_path);
   if (*st) return deepnav::runStereoCommand(stereo);
   if (*cf) {
     if (!list && board_path.empty()) {
       std::fprintf(stderr, "deepnav config: give a board file or --list\n");
-  if (*rn) return deepnav::runServiceCommand(run, validate_only);
-  if (*dc) return deepnav::runDecodeCommand(decode_format, decode_path);
       return 2;
     }
     return runConfig(board_path, list);
