@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "board/config/param_table.h"
+#include "drivers/camera/camera_config.h"
 #include "nav/ekf/ekf_config.h"
 
 #include <Eigen/Geometry>
@@ -49,6 +50,7 @@ struct BoardConfig {
     double baseline_m;
     Eigen::Vector3d p_cam_in_robot_m;  // left camera optical centre in the robot frame
     Eigen::Quaterniond q_robot_body;   // mounting of the FLU camera body (optical z = body x)
+    CameraSourceConfig source;         // the live stereo driver (drivers/camera): camera.driver, left, ...
   } camera;
   struct Markers {
     std::string panel_file;     // panel description (knowledge base); empty: no markers

@@ -1,0 +1,71 @@
+#include "drivers/camera/camera_source.h"
+
+#include <sstream>
+
+#include "drivers/camera/aravis_stereo_camera.h"
+#include "drivers/camera/raw_image.h"
+#include "drivers/camera/v4l2_stereo_camera.h"
+
+namespace deepnav {
+namespace {
+
+bool reject(const std::string& message, std::string* error) {
+  if (error) *error = message;
+  return false;
+}
+
+}  // namespace
+
+bool validateCameraSourceConfig(const CameraSourceConfig& c, std::string* error) {
+  if (c.driver != "aravis" && c.driver != "v4l2") {
+    return reject("camera.driver is '" + c.driver + "'; a camera source needs aravis or v4l2", error);
+  }
+  if (c.left.empty() || c.right.empty()) {
+    return reject("camera.left and camera.right must name the two cameras (driver " + c.driver + ")", error);
+  }
+  if (c.left == c.right) return reject("camera.left and camera.right are both '" + c.left + "'", error);
+  PixelFormat format;
+  if (!parsePixelFormat(c.pixel_format, &format)) {
+    return reject("camera.pixel_format '" + c.pixel_format + "' is not a known format", error);
+  }
+  if (c.width_px <= 0 || c.height_px <= 0 || (c.channels != 1 && c.channels != 3) || !(c.rate_hz > 0)) {
+    return reject("camera.width_px, height_px, channels, rate_hz: invalid image size or rate", error);
+  }
+  if (c.trigger != "free" && c.trigger != "software" && c.trigger != "hardware") {
+    return reject("camera.trigger '" + c.trigger + "': allowed free, software, hardware", error);
+  }
+  if (c.trigger == "hardware" && c.trigger_line.empty()) {
+    return reject("camera.trigger is hardware but camera.trigger_line is empty", error);
+  }
+  if (c.timestamp != "host" && c.timestamp != "device") {
+    return reject("camera.timestamp '" + c.timestamp + "': allowed host, device", error);
+  }
+  if (c.driver == "v4l2") {
+    if (c.trigger != "free") return reject("camera.trigger: V4L2 cameras free-run; set it to free", error);
+    if (c.timestamp != "host") return reject("camera.timestamp: V4L2 frames carry the kernel's time; set host", error);
+    if (c.offset_x_px != 0 || c.offset_y_px != 0) {
+      return reject("camera.offset_x_px / offset_y_px: the V4L2 driver does not crop; set 0", error);
+    }
+  }
+  const double period_ms = 1000.0 / c.rate_hz;
+  if (!(c.pair_tolerance_ms > 0) || c.pair_tolerance_ms >= 0.5 * period_ms) {
+    std::ostringstream o;
+    o << "camera.pair_tolerance_ms is " << c.pair_tolerance_ms << " ms; it must be above 0 and below half the frame "
+      << "period (" << 0.5 * period_ms << " ms at camera.rate_hz " << c.rate_hz << ")";
+    return reject(o.str(), error);
+  }
+  if (static_cast<double>(c.stale_after_us) <= period_ms * 1000.0) {
+    return reject("camera.stale_after_s must be longer than the frame period", error);
+  }
+  if (c.stream_buffers < 4) return reject("camera.stream_buffers must be at least 4", error);
+  return true;
+}
+
+std::unique_ptr<CameraSource> makeCameraSource(const CameraSourceConfig& config, std::string* error) {
+  if (config.driver == "aravis") return std::make_unique<AravisStereoCamera>(config);
+  if (config.driver == "v4l2") return std::make_unique<V4l2StereoCamera>(config);
+  if (error) *error = "camera.driver is '" + config.driver + "': no live camera source";
+  return nullptr;
+}
+
+}  // namespace deepnav

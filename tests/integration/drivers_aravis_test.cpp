@@ -1,0 +1,440 @@
+// The Aravis stereo driver against Aravis's own fake GigE Vision cameras on loopback: two in-process
+// cameras (arv_gv_fake_camera_new) serving a simulator texture through a fill pattern, or two
+// arv-fake-gv-camera-0.8 processes for the camera killed mid-stream. The two cameras need two
+// addresses (127.0.0.1 and 127.0.0.2); the test makes a private network namespace for them
+// (unshare(CLONE_NEWNET), as root) so it never touches the machine's own interfaces.
+#include <arpa/inet.h>
+#include <arv.h>
+#include <ifaddrs.h>
+#include <net/if.h>
+#include <sched.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/ioctl.h>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cstring>
+#include <functional>
+#include <memory>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <opencv2/core.hpp>
+
+#include "drivers/buffers/live_inputs.h"
+#include "drivers/camera/aravis_stereo_camera.h"
+#include "drivers/camera/gvcp_probe.h"
+#include "drivers/clock/monotonic_clock.h"
+#include "tools/sim/render/procedural_noise.h"
+
+extern char** environ;
+
+namespace deepnav {
+namespace {
+
+constexpr int kWidth = 320;
+constexpr int kHeight = 240;
+constexpr int kDisparityPx = 12;
+constexpr int kScrollPxPerFrame = 3;
+
+// --- loopback with two addresses ------------------------------------------------------------------
+
+bool hasAddress(const char* ip) {
+  ifaddrs* list = nullptr;
+  if (getifaddrs(&list) != 0) return false;
+  bool found = false;
+  for (ifaddrs* a = list; a != nullptr; a = a->ifa_next) {
+    if (a->ifa_addr == nullptr || a->ifa_addr->sa_family != AF_INET) continue;
+    char text[INET_ADDRSTRLEN] = {};
+    inet_ntop(AF_INET, &reinterpret_cast<sockaddr_in*>(a->ifa_addr)->sin_addr, text, sizeof(text));
+    if (std::strcmp(text, ip) == 0) found = true;
+  }
+  freeifaddrs(list);
+  return found;
+}
+
+// A private network namespace whose loopback carries 127.0.0.1 and 127.0.0.2. Called from the main
+// thread before any Aravis thread exists (a namespace belongs to the thread that made it and to the
+// threads it creates afterwards). Returns "" when ready, else why not.
+std::string prepareLoopback() {
+  if (hasAddress("127.0.0.2")) return "";
+  if (unshare(CLONE_NEWNET) != 0) {
+    return std::string("two loopback addresses needed: unshare(CLONE_NEWNET) failed (") + std::strerror(errno) +
+           ") and 127.0.0.2 is not on lo (ip addr add 127.0.0.2/8 dev lo)";
+  }
+  const int fd = socket(AF_INET, SOCK_DGRAM, 0);
+  ifreq up{};
+  std::strncpy(up.ifr_name, "lo", IFNAMSIZ - 1);
+  bool ok = fd >= 0 && ioctl(fd, SIOCGIFFLAGS, &up) == 0;
+  up.ifr_flags = static_cast<short>(up.ifr_flags | IFF_UP | IFF_RUNNING);
+  ok = ok && ioctl(fd, SIOCSIFFLAGS, &up) == 0;
+  ifreq alias{};
+  std::strncpy(alias.ifr_name, "lo:1", IFNAMSIZ - 1);
+  auto* sin = reinterpret_cast<sockaddr_in*>(&alias.ifr_addr);
+  sin->sin_family = AF_INET;
+  inet_pton(AF_INET, "127.0.0.2", &sin->sin_addr);
+  ok = ok && ioctl(fd, SIOCSIFADDR, &alias) == 0;
+  if (fd >= 0) close(fd);
+  if (!ok || !hasAddress("127.0.0.2")) {
+    return std::string("could not put 127.0.0.2 on the private loopback: ") + std::strerror(errno);
+  }
+  return "";
+}
+
+std::string g_loopback_problem = "not prepared";
+
+class LoopbackEnvironment : public ::testing::Environment {
+ public:
+  void SetUp() override { g_loopback_problem = prepareLoopback(); }
+};
+const auto* const g_env = ::testing::AddGlobalTestEnvironment(new LoopbackEnvironment);
+
+// --- simulator images through the fake cameras' fill pattern --------------------------------------
+
+// Frame k of a camera: the simulator's seabed texture scrolled by 3k pixels (the right camera sees it
+// 12 px further on: a fronto-parallel scene at constant disparity); the first 8 bytes carry k, so a
+// delivered image can be checked pixel by pixel against the frame it claims to be.
+struct Scene {
+  cv::Mat texture;  // CV_8UC1, wider than the image
+  Scene() {
+    cv::Mat noise = sim::fractalNoiseImage(1024, kHeight, 24.0f, 4, 0.5f, 7u);
+    noise.convertTo(texture, CV_8UC1, 100.0, 128.0);
+  }
+  void render(std::uint64_t k, int side, std::uint8_t* out, int width, int height) const {
+    for (int y = 0; y < height; ++y) {
+      const std::uint8_t* row = texture.ptr<std::uint8_t>(y % texture.rows);
+      for (int x = 0; x < width; ++x) {
+        const auto shift = static_cast<std::uint64_t>(x) + k * kScrollPxPerFrame + static_cast<std::uint64_t>(side * kDisparityPx);
+        out[y * width + x] = row[shift % static_cast<std::uint64_t>(texture.cols)];
+      }
+    }
+    std::memcpy(out, &k, sizeof(k));
+  }
+  // True when the image is exactly frame k of `side`, with k read from the image.
+  bool matches(const cv::Mat& image, int side, std::uint64_t* k_out) const {
+    std::uint64_t k = 0;
+    std::memcpy(&k, image.data, sizeof(k));
+    std::vector<std::uint8_t> expected(static_cast<std::size_t>(image.cols * image.rows));
+    render(k, side, expected.data(), image.cols, image.rows);
+    *k_out = k;
+    return std::memcmp(expected.data(), image.data, expected.size()) == 0;
+  }
+};
+
+struct FillState {
+  const Scene* scene = nullptr;
+  int side = 0;
+  std::atomic<std::uint64_t> frames{0};
+};
+
+void fillFromScene(ArvBuffer* buffer, void* data, guint32, guint32, ArvPixelFormat pixel_format) {
+  auto* state = static_cast<FillState*>(data);
+  const int w = arv_buffer_get_image_width(buffer);
+  const int h = arv_buffer_get_image_height(buffer);
+  auto* pixels = static_cast<std::uint8_t*>(const_cast<void*>(arv_buffer_get_data(buffer, nullptr)));
+  // The fake camera allocated the buffer for its current region (its payload, w * h bytes in Mono8);
+  // the received size is only set once the frame is sent.
+  if (pixels == nullptr || pixel_format != ARV_PIXEL_FORMAT_MONO_8) return;
+  state->scene->render(state->frames.fetch_add(1), state->side, pixels, w, h);
+}
+
+CameraSourceConfig baseConfig() {
+  CameraSourceConfig c;
+  c.driver = "aravis";
+  c.left = "127.0.0.1";
+  c.right = "GV02";  // found by serial number through Aravis's discovery
+  c.pixel_format = "mono8";
+  c.offset_x_px = 0;
+  c.offset_y_px = 0;
+  c.exposure_us = 2000;
+  c.trigger = "software";
+  c.trigger_line = "Line1";
+  c.pair_tolerance_ms = 10;
+  c.timestamp = "host";
+  c.stale_after_us = 300'000;
+  c.reconnect_interval_us = 500'000;
+  c.packet_resend = true;
+  c.packet_size_bytes = 1400;
+  c.stream_buffers = 8;
+  c.width_px = kWidth;
+  c.height_px = kHeight;
+  c.channels = 1;
+  c.rate_hz = 20;
+  return c;
+}
+
+struct Inputs {
+  FramePool pool;
+  SpscRing<int> frames;
+  Inputs() {
+    EXPECT_TRUE(pool.allocate(6, kWidth, kHeight, 1));
+    EXPECT_TRUE(frames.allocate(8));
+  }
+};
+
+bool waitFor(const std::function<bool()>& condition, double timeout_s) {
+  const TimeUs end = monotonicUs() + sToUs(timeout_s);
+  while (monotonicUs() < end) {
+    if (condition()) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  return condition();
+}
+
+class AravisStereoTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (!g_loopback_problem.empty()) GTEST_SKIP() << g_loopback_problem;
+  }
+};
+
+// Two in-process fake cameras serving the scene.
+struct FakePair {
+  Scene scene;
+  std::array<FillState, 2> fill;
+  std::array<ArvGvFakeCamera*, 2> cameras{};
+  bool start(double gvsp_lost_ratio) {
+    const char* addresses[2] = {"127.0.0.1", "127.0.0.2"};
+    const char* serials[2] = {"GV01", "GV02"};
+    for (int i = 0; i < 2; ++i) {
+      fill[static_cast<std::size_t>(i)].scene = &scene;
+      fill[static_cast<std::size_t>(i)].side = i;
+      cameras[static_cast<std::size_t>(i)] = arv_gv_fake_camera_new(addresses[i], serials[i]);
+      if (!arv_gv_fake_camera_is_running(cameras[static_cast<std::size_t>(i)])) return false;
+      g_object_set(cameras[static_cast<std::size_t>(i)], "gvsp-lost-ratio", gvsp_lost_ratio, nullptr);
+      arv_fake_camera_set_fill_pattern(arv_gv_fake_camera_get_fake_camera(cameras[static_cast<std::size_t>(i)]),
+                                       fillFromScene, &fill[static_cast<std::size_t>(i)]);
+    }
+    return true;
+  }
+  ~FakePair() {
+    for (auto* c : cameras) {
+      if (c != nullptr) g_object_unref(c);
+    }
+  }
+};
+
+// Pops every delivered pair; checks each image against the scene frame it carries.
+struct PairCheck {
+  int pairs = 0;
+  int bad_left = 0, bad_right = 0;
+  int lockstep = 0;  // pairs whose left and right frame counters advanced alike since the last pair
+  bool first = true;
+  std::uint64_t prev_kl = 0, prev_kr = 0;
+  TimeUs last_t_us = 0;
+  bool increasing = true;
+  TimeUs worst_latency_us = 0;
+  void drain(Inputs& in, const Scene& scene) {
+    int slot = -1;
+    while (in.frames.tryPop(slot)) {
+      const StereoFrame& f = in.pool.frame(slot);
+      std::uint64_t kl = 0, kr = 0;
+      if (!scene.matches(f.left, 0, &kl)) ++bad_left;
+      if (!scene.matches(f.right, 1, &kr)) ++bad_right;
+      // Each camera counts the frames it made; a pair from one trigger advances both counters alike.
+      if (first || kl - prev_kl == kr - prev_kr) ++lockstep;
+      first = false;
+      prev_kl = kl;
+      prev_kr = kr;
+      if (f.t_us <= last_t_us) increasing = false;
+      last_t_us = f.t_us;
+      worst_latency_us = std::max(worst_latency_us, monotonicUs() - f.t_us);
+      ++pairs;
+      in.pool.release(slot);
+    }
+  }
+};
+
+TEST_F(AravisStereoTest, SynchronisedPairsArriveWithinToleranceWithTheCamerasPixels) {
+  // GIVEN two fake GigE cameras on 127.0.0.1 and 127.0.0.2 serving the scene, software-triggered
+  FakePair fakes;
+  ASSERT_TRUE(fakes.start(0.0));
+  Inputs in;
+  AravisStereoCamera camera(baseConfig());
+  std::string error;
+  ASSERT_TRUE(camera.open(&error)) << error;
+  ASSERT_TRUE(camera.start(&in.pool, &in.frames, &error)) << error;
+
+  // WHEN the driver runs for 1.5 s at 20 Hz
+  PairCheck check;
+  const TimeUs end = monotonicUs() + 1'500'000;
+  while (monotonicUs() < end) {
+    check.drain(in, fakes.scene);
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  camera.stop();
+  check.drain(in, fakes.scene);
+  const CameraStatus s = camera.status();
+
+  // THEN pairs arrive at about the trigger rate, each image exactly the camera's, both from one trigger
+  EXPECT_GE(check.pairs, 20) << cameraStatusJson(s);
+  EXPECT_EQ(check.bad_left, 0);
+  EXPECT_EQ(check.bad_right, 0);
+  EXPECT_EQ(check.lockstep, check.pairs);  // never the left of one trigger with the right of another
+  EXPECT_TRUE(check.increasing);
+  EXPECT_LE(s.max_pair_skew_us, 10'000);
+  EXPECT_LT(check.worst_latency_us, 200'000);  // capture time is on this machine's monotonic clock
+  EXPECT_EQ(s.left.bad(), 0u) << cameraStatusJson(s);
+  EXPECT_EQ(s.right.bad(), 0u) << cameraStatusJson(s);
+  EXPECT_EQ(s.pairs, static_cast<std::uint64_t>(check.pairs));
+  EXPECT_TRUE(s.left.connected && s.right.connected);
+  EXPECT_FALSE(s.left.stale || s.right.stale);
+}
+
+TEST_F(AravisStereoTest, LostPacketsAreCountedAndTheirFramesNeverPassedOn) {
+  // GIVEN fake cameras losing 1 % of their stream packets, and no resend
+  FakePair fakes;
+  ASSERT_TRUE(fakes.start(0.01));
+  Inputs in;
+  CameraSourceConfig config = baseConfig();
+  config.packet_resend = false;
+  AravisStereoCamera camera(config);
+  std::string error;
+  ASSERT_TRUE(camera.open(&error)) << error;
+  ASSERT_TRUE(camera.start(&in.pool, &in.frames, &error)) << error;
+
+  // WHEN the driver runs for 2 s
+  PairCheck check;
+  const TimeUs end = monotonicUs() + 2'000'000;
+  while (monotonicUs() < end) {
+    check.drain(in, fakes.scene);
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  camera.stop();
+  check.drain(in, fakes.scene);
+  const CameraStatus s = camera.status();
+
+  // THEN incomplete frames are counted per status on both cameras, and every pair handed on is intact
+  const auto missing = static_cast<std::size_t>(FrameStatus::kMissingPackets);
+  const auto timeout = static_cast<std::size_t>(FrameStatus::kTimeout);
+  EXPECT_GT(s.left.frames[missing] + s.left.frames[timeout], 0u) << cameraStatusJson(s);
+  EXPECT_GT(s.right.frames[missing] + s.right.frames[timeout], 0u) << cameraStatusJson(s);
+  EXPECT_GT(check.pairs, 0) << cameraStatusJson(s);
+  EXPECT_EQ(check.bad_left, 0);
+  EXPECT_EQ(check.bad_right, 0);
+  // A frame whose partner was lost finds no pair: it is counted, not paired with another trigger's.
+  EXPECT_GT(s.unpaired, 0u);
+}
+
+// --- a camera process killed mid-stream -------------------------------------------------------------
+
+pid_t spawnFakeCamera(const char* address, const char* serial) {
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, 2, "/dev/null", O_WRONLY, 0);
+  std::string a = address, s = serial;
+  char name[] = "arv-fake-gv-camera-0.8";
+  char opt_i[] = "-i";
+  char opt_s[] = "-s";
+  char* argv[] = {name, opt_i, a.data(), opt_s, s.data(), nullptr};
+  pid_t pid = -1;
+  if (posix_spawnp(&pid, name, &actions, nullptr, argv, environ) != 0) pid = -1;
+  posix_spawn_file_actions_destroy(&actions);
+  return pid;
+}
+
+void killAndReap(pid_t pid) {
+  if (pid <= 0) return;
+  kill(pid, SIGKILL);
+  waitpid(pid, nullptr, 0);
+}
+
+bool fakeCameraToolInstalled() {
+  const char* path = std::getenv("PATH");
+  std::string dirs = path ? path : "/usr/bin:/bin";
+  std::size_t start = 0;
+  while (start <= dirs.size()) {
+    const std::size_t end = dirs.find(':', start);
+    const std::string dir = dirs.substr(start, end == std::string::npos ? std::string::npos : end - start);
+    if (access((dir + "/arv-fake-gv-camera-0.8").c_str(), X_OK) == 0) return true;
+    if (end == std::string::npos) break;
+    start = end + 1;
+  }
+  return false;
+}
+
+TEST_F(AravisStereoTest, CameraKilledMidStreamIsFlaggedStaleAndReconnectedWhenItReturns) {
+  if (!fakeCameraToolInstalled()) GTEST_SKIP() << "arv-fake-gv-camera-0.8 not found (Debian package aravis-tools-cli)";
+  // GIVEN two fake camera processes streaming pairs
+  pid_t left = spawnFakeCamera("127.0.0.1", "GV01");
+  pid_t right = spawnFakeCamera("127.0.0.2", "GV02");
+  ASSERT_GT(left, 0);
+  ASSERT_GT(right, 0);
+  Inputs in;
+  CameraSourceConfig config = baseConfig();
+  config.right = "127.0.0.2";
+  // The processes take a moment to listen; opening a camera that is not there yet blocks for seconds.
+  ASSERT_TRUE(waitFor([] { return gvcpDeviceAnswers("127.0.0.1", 50) && gvcpDeviceAnswers("127.0.0.2", 50); }, 5.0));
+  auto owned = std::make_unique<AravisStereoCamera>(config);
+  AravisStereoCamera& camera = *owned;
+  std::string error;
+  ASSERT_TRUE(camera.open(&error)) << error;
+  ASSERT_TRUE(camera.start(&in.pool, &in.frames, &error)) << error;
+  auto drain = [&] {
+    int slot = -1;
+    while (in.frames.tryPop(slot)) in.pool.release(slot);
+  };
+  ASSERT_TRUE(waitFor([&] { drain(); return camera.status().pairs >= 5; }, 3.0)) << cameraStatusJson(camera.status());
+
+  // WHEN the right camera is killed
+  killAndReap(right);
+  // THEN it is flagged stale and no pair is formed without it
+  ASSERT_TRUE(waitFor([&] { drain(); return camera.status().right.stale; }, 2.0)) << cameraStatusJson(camera.status());
+  const std::uint64_t pairs_at_loss = camera.status().pairs;
+  EXPECT_FALSE(camera.status().left.stale);
+
+  // WHEN it comes back
+  right = spawnFakeCamera("127.0.0.2", "GV02");
+  ASSERT_GT(right, 0);
+  EXPECT_EQ(camera.status().pairs, pairs_at_loss);  // nothing paired while it was away
+  // THEN the driver reopens it and pairs flow again
+  const bool resumed = waitFor(
+      [&] {
+        drain();
+        const CameraStatus s = camera.status();
+        return s.right.reconnects >= 1 && s.pairs >= pairs_at_loss + 5 && !s.right.stale;
+      },
+      10.0);
+  const CameraStatus s = camera.status();
+  owned.reset();  // closes both cameras while they still answer
+  killAndReap(left);
+  killAndReap(right);
+  EXPECT_TRUE(resumed) << cameraStatusJson(s);
+  EXPECT_GE(s.right.stale_events, 1u);
+  EXPECT_EQ(s.left.reconnects, 0u) << cameraStatusJson(s);
+}
+
+TEST_F(AravisStereoTest, MissingCameraAtStartUpIsNamedInTheError) {
+  FakePair fakes;
+  ASSERT_TRUE(fakes.start(0.0));
+  CameraSourceConfig config = baseConfig();
+  config.right = "NO-SUCH-CAMERA";
+  AravisStereoCamera camera(config);
+  std::string error;
+  EXPECT_FALSE(camera.open(&error));
+  EXPECT_NE(error.find("camera.right 'NO-SUCH-CAMERA'"), std::string::npos) << error;
+}
+
+TEST_F(AravisStereoTest, PixelFormatTheCameraLacksIsAStartUpErrorNamingTheKey) {
+  FakePair fakes;
+  ASSERT_TRUE(fakes.start(0.0));
+  CameraSourceConfig config = baseConfig();
+  config.pixel_format = "yuyv";  // the fake camera offers Mono8, Mono16, RGB8 and Bayer 8-bit only
+  AravisStereoCamera camera(config);
+  std::string error;
+  EXPECT_FALSE(camera.open(&error));
+  EXPECT_NE(error.find("camera.left '127.0.0.1'"), std::string::npos) << error;
+  EXPECT_NE(error.find("camera.pixel_format"), std::string::npos) << error;
+}
+
+}  // namespace
+}  // namespace deepnav
