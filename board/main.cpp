@@ -10,6 +10,7 @@
 #include "board/config/board_config.h"
 #include "board/replay/bench_replay.h"
 #include "board/replay/realtime_replay.h"
+#include "board/service/run_command.h"
 #include "vision/iqa/mdm.h"
 
 namespace {
@@ -106,12 +107,24 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"pd0", "pd6", "wl-a50", "nmea0183", "n2k-candump", "xsens"}));
   dc->add_option("file", decode_path, "capture file")->required()->check(CLI::ExistingFile);
 
+  deepnav::ServiceOptions run;
+  bool validate_only = false;
+  auto* rn = app.add_subcommand("run", "the vehicle service: validate the board, then run loop, vision, outputs, recording");
+  rn->add_option("--board", run.board_path, "board file")->required();
+  rn->add_option("--replay", run.replay_path, "recording to play as the sensors (overrides sources.replay_path)");
+  rn->add_option("--record", run.recording_path, "recording file (overrides service.recording_dir)");
+  rn->add_flag("--no-record", run.no_recording, "do not record");
+  rn->add_option("--duration", run.duration_s, "stop after this many seconds (default: on SIGTERM or end of replay)")
+      ->check(CLI::PositiveNumber);
+  rn->add_flag("--validate", validate_only, "validate the board (files, devices, outputs) and exit");
+
   CLI11_PARSE(app, argc, argv);
   if (*rp) {
     replay.realtime = realtime;
     return runReplay(replay);
   }
   if (*dc) return deepnav::runDecodeCommand(decode_format, decode_path);
+  if (*rn) return deepnav::runServiceCommand(run, validate_only);
   if (*iq) return runIqa(iqa_path);
   if (*st) return deepnav::runStereoCommand(stereo);
   if (*cf) {

@@ -68,6 +68,31 @@ struct BoardConfig {
     double min_workspace_time_s;
     double min_faces_seen_fraction;
   } stage;
+  struct Sources {                // where `deepnav run` takes its inputs (board/service/README.md)
+    std::string replay_path;      // recording played as the sensors, relative to the board file
+    std::string camera_left;      // devices, checked by the board validation; empty: not fitted
+    std::string camera_right;
+    std::string dvl_serial;
+    std::string ahrs_serial;
+    std::string depth_serial;
+    std::string can_interface;
+  } sources;
+  struct Outputs {                // NavSolution to the vehicle at loop rate (board/service/README.md)
+    bool modbus_enabled;
+    std::string modbus_address;
+    int modbus_port;
+    int modbus_max_clients;
+    std::string udp_destinations;  // "host:port,host:port"; empty: no UDP
+  } outputs;
+  struct Service {
+    std::string recording_dir;    // where `deepnav run` writes its recording; empty: no recording
+  } service;
+  struct Realtime {
+    int loop_priority;            // SCHED_FIFO priority of the nav loop thread; 0: normal scheduling
+    std::string loop_cpus;        // CPU list of the nav loop thread ("2" or "2-3,5"); empty: any
+    std::string process_cpus;     // CPU list of every other thread; empty: any
+    bool mlockall;                // lock all memory (no page faults in the loop)
+  } realtime;
   EkfConfig ekf;  // navigation filter: mounting, noise, gates, timeouts, delayed-fusion window
 };
 

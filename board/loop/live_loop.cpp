@@ -116,10 +116,18 @@ void LiveLoop::runTick(TimeUs t_us) {
   // Vision results are late by nature: they carry their capture time and are fused at it.
   VisionResult v;
   while (vision_results_.tryPop(v)) core_.consume(v);
-  publish(core_.tick(t_us));
+  const NavSolution& solution = core_.tick(t_us);
+  publish(solution);
+  if (observer_) observer_->onTick(solution, core_.counters());
+}
+
+std::uint64_t LiveLoop::inputsRefused() const {
+  return inputs_.imu.dropped() + inputs_.dvl.dropped() + inputs_.heading.dropped() + inputs_.attitude.dropped() +
+         inputs_.depth.dropped() + inputs_.frames.dropped();
 }
 
 void LiveLoop::loopThread() {
+  if (thread_hook_) thread_hook_("nav");
   const TimeUs period = scheduler_.periodUs();
   TimeUs next_us = ((monotonicUs() + clock_offset_us_) / period + 1) * period;
   for (std::uint64_t tick = 0; running_.load(std::memory_order_acquire); ++tick) {
@@ -137,6 +145,7 @@ void LiveLoop::loopThread() {
 }
 
 void LiveLoop::visionThread() {
+  if (thread_hook_) thread_hook_("vision");
   while (running_.load(std::memory_order_acquire)) {
     int index = -1;
     if (!inputs_.frames.tryPop(index)) {

@@ -1,6 +1,7 @@
 #pragma once
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -13,6 +14,14 @@
 #include "vision/pipeline/vision_pipeline.h"
 
 namespace deepnav {
+
+// Sees every tick's solution on the loop thread, right after the tick (outputs hang here). It must not
+// block, allocate or throw: copy what it needs and return.
+class TickObserver {
+ public:
+  virtual ~TickObserver() = default;
+  virtual void onTick(const NavSolution& solution, const InputCounters& counters) = 0;
+};
 
 // The vehicle's runtime: a fixed-rate nav loop thread, a vision worker thread and the recorder thread,
 // around one NavCore. Drivers (live or replay) push into inputs(); the loop merges the rings in time
@@ -29,6 +38,12 @@ class LiveLoop {
   bool init(const VehicleSetup& setup, const std::string& recording_path, std::string* error);
   LiveInputs& inputs() { return inputs_; }
 
+  // Both are set before start(). The observer sees every tick (nullptr: none). The thread hook runs once
+  // at the start of the loop thread ("nav") and of the vision worker ("vision"), on that thread, e.g. to
+  // set its scheduling policy and CPU affinity.
+  void setTickObserver(TickObserver* observer) { observer_ = observer; }
+  void setThreadStartHook(std::function<void(const char* thread_name)> hook) { thread_hook_ = std::move(hook); }
+
   // Starts the threads. The loop's clock is t_us = monotonicUs() + clock_offset_us (0 on the vehicle; a
   // replay maps the recording's clock onto now).
   bool start(TimeUs clock_offset_us, std::string* error);
@@ -44,6 +59,9 @@ class LiveLoop {
   NavSolution latest() const;
   InputCounters counters() const;
   std::uint64_t recorderDrops() const { return recorder_.dropped(); }
+  std::uint64_t recorderWriteFailures() const { return recording_ ? recorder_.writeFailures() : 0; }
+  // Samples and frames refused by full input rings or an exhausted frame pool (a driver outran the loop).
+  std::uint64_t inputsRefused() const;
 
  private:
   void loopThread();
@@ -66,6 +84,8 @@ class LiveLoop {
   NavSolution latest_;
   InputCounters counters_;
   bool recording_ = false;
+  TickObserver* observer_ = nullptr;
+  std::function<void(const char*)> thread_hook_;
 };
 
 }  // namespace deepnav

@@ -1,0 +1,214 @@
+#include "board/service/deepnav_service.h"
+
+#include <signal.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <thread>
+
+#include "board/service/status_text.h"
+#include "drivers/clock/monotonic_clock.h"
+#include "drivers/realtime/realtime.h"
+
+namespace deepnav {
+namespace {
+
+constexpr TimeUs kStartDelayUs = 200'000;     // threads start before the first replayed sample
+constexpr TimeUs kDrainUs = 500'000;          // after a replay's last sample, before stopping
+constexpr TimeUs kPollUs = 50'000;            // how often the main thread looks at stop requests
+constexpr TimeUs kHealthWindowUs = 500'000;   // health evaluation period (at most half the watchdog)
+constexpr TimeUs kStatusPeriodUs = 1'000'000;  // STATUS= period
+constexpr TimeUs kThreadStartTimeoutUs = 2'000'000;
+
+std::string utcStamp() {
+  const std::time_t now = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&now, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y%m%dT%H%M%SZ", &tm);
+  return buf;
+}
+
+bool prepareRecordingPath(const BoardConfig& c, const ServiceOptions& o, std::string* path, std::string* error) {
+  if (o.no_recording) return true;
+  if (!o.recording_path.empty()) {
+    *path = o.recording_path;
+    return true;
+  }
+  if (c.service.recording_dir.empty()) return true;
+  std::error_code ec;
+  std::filesystem::create_directories(c.service.recording_dir, ec);
+  if (ec || ::access(c.service.recording_dir.c_str(), W_OK) != 0) {
+    if (error) {
+      *error = "service.recording_dir: " + c.service.recording_dir + " is not a writable directory" +
+               (ec ? ": " + ec.message() : "");
+    }
+    return false;
+  }
+  *path = c.service.recording_dir + "/deepnav-" + utcStamp() + ".mcap";
+  return true;
+}
+
+}  // namespace
+
+DeepnavService::~DeepnavService() {
+  std::string ignored;
+  shutdown(&ignored);
+}
+
+bool DeepnavService::init(const ServiceOptions& options, std::string* error) {
+  options_ = options;
+  if (!notifier_.open(error)) return false;
+  watchdog_us_ = SystemdNotifier::watchdogIntervalUs();
+  notifier_.send("STATUS=validating " + options.board_path);
+  if (!loadVehicleSetup(options.board_path, &setup_, error)) return false;
+  if (!validateBoard(setup_, options.board_path, options.replay_path, &board_, error)) return false;
+  if (board_.has_devices) {
+    // The live drivers (Aravis, SocketCAN, serial, Modbus RTU) are the drivers issue's; until they are
+    // wired here a device board validates but cannot run.
+    if (error) *error = options.board_path + ": sources: the devices answer, but this build has no live drivers yet";
+    return false;
+  }
+  const BoardConfig& c = setup_.config;
+  if (board_.has_process_cpus && !setThreadCpus(board_.process_cpus, error)) {
+    if (error) *error = "realtime.process_cpus: " + *error;
+    return false;
+  }
+  if (c.realtime.mlockall && !lockAllMemory(error)) {
+    if (error) *error = "realtime.mlockall: " + *error;
+    return false;
+  }
+  if (!prepareRecordingPath(c, options, &recording_path_, error)) return false;
+  // Outputs first: a busy port fails the start before a recording file is created.
+  loop_ = std::make_unique<LiveLoop>();
+  if (!publisher_.start(c.outputs, loop_.get(), error)) return false;
+  if (!source_.open(board_.replay_path, error)) return false;
+  if (!loop_->init(setup_, recording_path_, error)) return false;
+  publisher_.chain(options.tick_observer);
+  loop_->setTickObserver(&publisher_);
+  loop_->setThreadStartHook([this](const char* thread) { applyLoopThreadSettings(thread); });
+  return true;
+}
+
+void DeepnavService::applyLoopThreadSettings(const char* thread) {
+  if (std::string(thread) != "nav") return;
+  const BoardConfig::Realtime& r = setup_.config.realtime;
+  std::string why;
+  if (board_.has_loop_cpus && !setThreadCpus(board_.loop_cpus, &why)) {
+    loop_thread_error_ = "realtime.loop_cpus: " + why;
+  } else if (r.loop_priority > 0 && !setThreadFifo(r.loop_priority, &why)) {
+    loop_thread_error_ = "realtime.loop_priority: " + why;
+  }
+  loop_thread_state_.store(loop_thread_error_.empty() ? 1 : -1, std::memory_order_release);
+}
+
+bool DeepnavService::startThreads(std::string* error) {
+  const TimeUs offset = source_.firstTimeUs() - (monotonicUs() + kStartDelayUs);
+  if (!loop_->start(offset, error)) return false;
+  running_ = true;
+  const TimeUs deadline = monotonicUs() + kThreadStartTimeoutUs;
+  while (loop_thread_state_.load(std::memory_order_acquire) == 0 && monotonicUs() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  if (loop_thread_state_.load(std::memory_order_acquire) != 1) {
+    if (error) *error = loop_thread_error_.empty() ? "loop: the nav thread did not start" : loop_thread_error_;
+    return false;
+  }
+  source_.start(&loop_->inputs(), offset);
+  return true;
+}
+
+void DeepnavService::evaluateHealth(bool* healthy) {
+  const NavOutput last = publisher_.latest();
+  HealthSample sample;
+  sample.loop = loop_->stats();
+  sample.recorder_drops = loop_->recorderDrops();
+  sample.recorder_failures = loop_->recorderWriteFailures();
+  sample.inputs_refused = loop_->inputsRefused();
+  sample.faults = last.solution.faults;
+  sample.solution_finite = isFinite(last.solution);
+  publisher_.setHealth(health_.update(sample));
+  *healthy = health_.healthy();
+}
+
+bool DeepnavService::run(StopSignals* signals, std::string* error) {
+  if (!startThreads(error)) {
+    std::string ignored;
+    shutdown(&ignored);
+    return false;
+  }
+  notifier_.send("READY=1\nSTATUS=running: " + board_.replay_path);
+  std::fprintf(stderr, "deepnav run: running (board %s, replay %s, recording %s, watchdog %s)\n",
+               options_.board_path.c_str(), board_.replay_path.c_str(),
+               recording_path_.empty() ? "off" : recording_path_.c_str(),
+               watchdog_us_ > 0 ? (std::to_string(watchdog_us_ / 1000) + " ms").c_str() : "off");
+  const TimeUs window_us = watchdog_us_ > 0 ? std::min(kHealthWindowUs, watchdog_us_ / 2) : kHealthWindowUs;
+  const TimeUs start_us = monotonicUs();
+  TimeUs next_health = start_us + window_us;
+  TimeUs next_status = start_us + kStatusPeriodUs;
+  TimeUs source_done_us = 0;
+  while (true) {
+    const TimeUs now = monotonicUs();
+    const TimeUs wait_us = std::min({kPollUs, next_health - now, next_status - now});
+    if (signals) {
+      if (const int sig = signals->wait(wait_us); sig != 0) {
+        stop_reason_ = std::string("signal ") + (sig == SIGTERM ? "SIGTERM" : sig == SIGINT ? "SIGINT" : "SIGHUP");
+        break;
+      }
+    } else if (wait_us > 0) {
+      std::this_thread::sleep_for(std::chrono::microseconds(wait_us));
+    }
+    if (stop_requested_.load(std::memory_order_acquire)) {
+      stop_reason_ = "requested";
+      break;
+    }
+    const TimeUs t = monotonicUs();
+    if (options_.duration_s > 0 && t - start_us >= sToUs(options_.duration_s)) {
+      stop_reason_ = "duration";
+      break;
+    }
+    if (source_.finished() && source_done_us == 0) source_done_us = t;
+    if (source_done_us > 0 && t - source_done_us >= kDrainUs) {
+      stop_reason_ = "end of replay";
+      break;
+    }
+    if (t >= next_health) {
+      bool healthy = false;
+      evaluateHealth(&healthy);
+      // Only a loop that ticked since the last window feeds the watchdog.
+      if (healthy && watchdog_us_ > 0) notifier_.send("WATCHDOG=1");
+      next_health += window_us;
+      if (next_health < t) next_health = t + window_us;
+    }
+    if (t >= next_status) {
+      NavOutput out = publisher_.latest();
+      out.health = health_.bits();
+      notifier_.send("STATUS=" + formatStatus(out));
+      next_status += kStatusPeriodUs;
+      if (next_status < t) next_status = t + kStatusPeriodUs;
+    }
+  }
+  notifier_.send("STOPPING=1\nSTATUS=stopping: " + stop_reason_);
+  std::string why;
+  shutdown(&why);
+  if (!why.empty() && error) *error = why;
+  return why.empty();
+}
+
+void DeepnavService::shutdown(std::string* error) {
+  if (!running_) return;
+  running_ = false;
+  // The loop first: its last ticks still have their inputs, and the recording closes as soon as possible.
+  std::string why;
+  const bool closed = loop_->stop(&why);
+  source_.stop();
+  publisher_.stop();
+  if (!closed && error) *error = "recording: " + why;
+  if (!source_.error().empty()) std::fprintf(stderr, "deepnav run: replay source: %s\n", source_.error().c_str());
+}
+
+}  // namespace deepnav
