@@ -189,10 +189,11 @@ int V4l2Capture::dequeue(Frame* frame, std::string* error) {
   frame->image.format = format_;
   frame->sequence = b.sequence;
   frame->error = (b.flags & V4L2_BUF_FLAG_ERROR) != 0;
+  frame->dequeued_us = monotonicUs();
   if ((b.flags & V4L2_BUF_FLAG_TIMESTAMP_MASK) == V4L2_BUF_FLAG_TIMESTAMP_MONOTONIC) {
     frame->t_us = static_cast<TimeUs>(b.timestamp.tv_sec) * kUsPerS + static_cast<TimeUs>(b.timestamp.tv_usec);
   } else {
-    frame->t_us = monotonicUs();  // a driver without monotonic stamps: the dequeue time is the best left
+    frame->t_us = frame->dequeued_us;  // a driver without monotonic stamps: the dequeue time is the best left
   }
   return 1;
 }

@@ -19,6 +19,7 @@ class V4l2Capture {
     int index = -1;          // buffer to give back with requeue()
     RawImage image;
     TimeUs t_us = 0;         // the buffer's timestamp on the monotonic clock
+    TimeUs dequeued_us = 0;  // monotonic time of the dequeue
     std::uint32_t sequence = 0;
     bool error = false;      // V4L2_BUF_FLAG_ERROR: the driver says the data may be corrupt
   };

@@ -2,6 +2,7 @@
 
 #include <poll.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "drivers/clock/monotonic_clock.h"
@@ -147,7 +148,9 @@ void V4l2StereoCamera::finish(const FramePairer::Result& r) {
   };
   const V4l2Capture::Frame& l = held(r.left.handle);
   const V4l2Capture::Frame& rr = held(r.right.handle);
-  writer_->write(l.image, rr.image, l.t_us, std::abs(l.t_us - rr.t_us),
+  // Pairs match on the drivers' stamps; the capture time handed on is never later than the dequeue
+  // (vivid, for one, stamps the end of the frame period before that period is over).
+  writer_->write(l.image, rr.image, std::min(l.t_us, l.dequeued_us), std::abs(l.t_us - rr.t_us),
                  static_cast<std::uint32_t>(std::lround(config_.exposure_us)), l.sequence);
   recycle(r.left.handle);
   recycle(r.right.handle);
