@@ -32,6 +32,8 @@ class CanFieldMapping {
   bool parse(std::string_view spec, std::string* error);
   int numFields() const { return num_fields_; }
   bool empty() const { return num_fields_ == 0; }
+  // Identifier of field i (for the socket's acceptance filters).
+  uint32_t fieldId(int i, bool* extended) const { return *extended = fields_[i].extended, fields_[i].id; }
   // True when the frame's identifier is mapped.
   bool matches(const CanFrame& frame) const;
 

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -94,15 +95,19 @@ inline void putBeF32(std::vector<uint8_t>* v, float f) {
 // Xbus MTData2 with packet counter, quaternion (w,x,y,z), acceleration and rate of turn (float32, ENU).
 inline std::vector<uint8_t> buildMtData2(uint16_t counter, const float q[4], const float acc[3], const float gyr[3]) {
   std::vector<uint8_t> p;
-  p.insert(p.end(), {0x10, 0x20, 2, uint8_t(counter >> 8), uint8_t(counter & 0xFF)});
-  p.insert(p.end(), {0x20, 0x10, 16});
+  // push_back rather than insert of an initializer list: g++ 12 -O3 warns falsely on the latter.
+  const auto put = [&p](std::initializer_list<uint8_t> bytes) {
+    for (uint8_t b : bytes) p.push_back(b);
+  };
+  put({0x10, 0x20, 2, uint8_t(counter >> 8), uint8_t(counter & 0xFF)});
+  put({0x20, 0x10, 16});
   for (int i = 0; i < 4; ++i) putBeF32(&p, q[i]);
-  p.insert(p.end(), {0x40, 0x20, 12});
+  put({0x40, 0x20, 12});
   for (int i = 0; i < 3; ++i) putBeF32(&p, acc[i]);
-  p.insert(p.end(), {0x80, 0x20, 12});
+  put({0x80, 0x20, 12});
   for (int i = 0; i < 3; ++i) putBeF32(&p, gyr[i]);
   std::vector<uint8_t> m = {0xFA, 0xFF, 0x36, uint8_t(p.size())};
-  m.insert(m.end(), p.begin(), p.end());
+  for (uint8_t b : p) m.push_back(b);
   uint8_t sum = 0;
   for (size_t i = 1; i < m.size(); ++i) sum = uint8_t(sum + m[i]);
   m.push_back(uint8_t(0x100 - sum));
