@@ -6,6 +6,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "board/cli/decode_command.h"
+#include "board/cli/calibrate_command.h"
 #include "board/cli/stereo_command.h"
 #include "board/config/board_config.h"
 #include "board/replay/bench_replay.h"
@@ -118,6 +119,23 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   rn->add_flag("--validate", validate_only, "validate the board (files, devices, outputs) and exit");
 
+  deepnav::CalibrateCommandOptions calibrate;
+  auto* cb = app.add_subcommand("calibrate", "stereo calibration from ChArUco views (images or a recording)");
+  cb->add_option("--target", calibrate.target_path, "target.yaml (vision/calib/README.md)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  cb->add_option("inputs", calibrate.inputs, "image files (*left*/*right*), folders of them, or .mcap recordings")
+      ->required();
+  cb->add_option("--out", calibrate.out_path, "calibration file to write (OpenCV YAML)");
+  cb->add_option("--every", calibrate.every, "recordings: use every N-th stereo pair")->check(CLI::Range(1, 100000));
+
+  std::string decode_format, decode_path;
+  auto* dc = app.add_subcommand("decode", "decode a sensor capture: one JSON object per message (SI units) on stdout");
+  dc->add_option("format", decode_format, "pd0 | pd6 | wl-a50 | nmea0183 | n2k-candump | xsens")
+      ->required()
+      ->check(CLI::IsMember({"pd0", "pd6", "wl-a50", "nmea0183", "n2k-candump", "xsens"}));
+  dc->add_option("file", decode_path, "capture file")->required()->check(CLI::ExistingFile);
+
   CLI11_PARSE(app, argc, argv);
   if (*rp) {
     replay.realtime = realtime;
@@ -127,6 +145,7 @@ int main(int argc, char** argv) {
   if (*rn) return deepnav::runServiceCommand(run, validate_only);
   if (*iq) return runIqa(iqa_path);
   if (*st) return deepnav::runStereoCommand(stereo);
+  if (*cb) return deepnav::runCalibrateCommand(calibrate);
   if (*cf) {
     if (!list && board_path.empty()) {
       std::fprintf(stderr, "deepnav config: give a board file or --list\n");

@@ -50,6 +50,16 @@ struct BoardConfig {
     double baseline_m;
     Eigen::Vector3d p_cam_in_robot_m;  // left camera optical centre in the robot frame
     Eigen::Quaterniond q_robot_body;   // mounting of the FLU camera body (optical z = body x)
+    std::string calibration_file;      // stereo calibration of the raw images (OpenCV YAML); empty: rectified
+    struct Port {                      // flat port in front of each camera (vision/calib/flat_port.h)
+      std::string model;               // none | flat
+      double pinhole_to_glass_m;
+      double glass_thickness_m;
+      double n_air;
+      double n_glass;
+      double n_water;
+      double reference_distance_m;     // PinAx mapping exact at this distance
+    } port;
     CameraSourceConfig source;         // the live stereo driver (drivers/camera): camera.driver, left, ...
   } camera;
   struct Markers {

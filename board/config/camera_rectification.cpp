@@ -1,0 +1,46 @@
+#include "board/config/camera_rectification.h"
+
+#include <filesystem>
+
+#include "board/config/stereo_calibration_file.h"
+
+namespace deepnav {
+
+RectificationOptions rectificationOptions(const BoardConfig& config) {
+  RectificationOptions o;
+  const auto& port = config.camera.port;
+  o.correction = port.model == "flat" ? PortCorrection::kPinax : PortCorrection::kNone;
+  o.pinax.port.pinhole_to_glass_m = port.pinhole_to_glass_m;
+  o.pinax.port.glass_thickness_m = port.glass_thickness_m;
+  o.pinax.port.n_air = port.n_air;
+  o.pinax.port.n_glass = port.n_glass;
+  o.pinax.port.n_water = port.n_water;
+  o.pinax.reference_distance_m = port.reference_distance_m;
+  return o;
+}
+
+bool buildCameraRectification(const BoardConfig& config, const std::string& board_dir, StereoRectification* out,
+                              bool* needed, std::string* error) {
+  *needed = !config.camera.calibration_file.empty();
+  if (!*needed) return true;
+  const std::string path = (std::filesystem::path(board_dir) / config.camera.calibration_file).string();
+  StereoCalibration calibration;
+  if (!readStereoCalibrationFile(path, &calibration, error)) return false;
+  if (calibration.image_size.width != config.camera.width_px ||
+      calibration.image_size.height != config.camera.height_px) {
+    if (error)
+      *error = path + ": calibrated for " + std::to_string(calibration.image_size.width) + " x " +
+               std::to_string(calibration.image_size.height) + " px images, the board's camera gives " +
+               std::to_string(config.camera.width_px) + " x " + std::to_string(config.camera.height_px) +
+               " (camera.width_px, camera.height_px)";
+    return false;
+  }
+  std::string rect_error;
+  if (!computeStereoRectification(calibration, rectificationOptions(config), out, &rect_error)) {
+    if (error) *error = path + ": " + rect_error + (config.camera.port.model == "flat" ? " (camera.port.*)" : "");
+    return false;
+  }
+  return true;
+}
+
+}  // namespace deepnav
