@@ -5,8 +5,8 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
-#include "board/cli/decode_command.h"
 #include "board/cli/calibrate_command.h"
+#include "board/cli/decode_command.h"
 #include "board/cli/stereo_command.h"
 #include "board/config/board_config.h"
 #include "board/replay/bench_replay.h"
@@ -81,6 +81,10 @@ int main(int argc, char** argv) {
   rp->add_flag("--realtime", realtime, "play at the recorded speed through the threaded vehicle runtime");
   rp->add_flag("--rerun", replay.rerun, "re-run vision and ticks even if the recording holds outputs");
   rp->add_flag("--record-images", replay.record_images, "copy the stereo images into the output recording");
+  rp->add_option("--set", replay.overrides, "board override key=value (repeatable), e.g. vision.vo_mode=all");
+  rp->add_option("--workspace-in", replay.workspace_in, "start from a saved workspace (directory)")
+      ->check(CLI::ExistingDirectory);
+  rp->add_option("--workspace-out", replay.workspace_out, "save the workspace (panel-relative map) at the end");
 
   deepnav::StereoCommandOptions stereo;
   auto* st = app.add_subcommand("stereo", "dense disparity of a rectified stereo pair, written as PFM");
@@ -100,13 +104,6 @@ int main(int argc, char** argv) {
   auto* cf = app.add_subcommand("config", "validate a board file, or list every parameter");
   cf->add_option("board", board_path, "board.yaml to validate");
   cf->add_flag("--list", list, "print every parameter with unit, default and range (Markdown)");
-
-  std::string decode_format, decode_path;
-  auto* dc = app.add_subcommand("decode", "decode a sensor capture: one JSON object per message (SI units) on stdout");
-  dc->add_option("format", decode_format, "pd0 | pd6 | wl-a50 | nmea0183 | n2k-candump | xsens")
-      ->required()
-      ->check(CLI::IsMember({"pd0", "pd6", "wl-a50", "nmea0183", "n2k-candump", "xsens"}));
-  dc->add_option("file", decode_path, "capture file")->required()->check(CLI::ExistingFile);
 
   deepnav::ServiceOptions run;
   bool validate_only = false;
@@ -141,8 +138,8 @@ int main(int argc, char** argv) {
     replay.realtime = realtime;
     return runReplay(replay);
   }
-  if (*dc) return deepnav::runDecodeCommand(decode_format, decode_path);
   if (*rn) return deepnav::runServiceCommand(run, validate_only);
+  if (*dc) return deepnav::runDecodeCommand(decode_format, decode_path);
   if (*iq) return runIqa(iqa_path);
   if (*st) return deepnav::runStereoCommand(stereo);
   if (*cb) return deepnav::runCalibrateCommand(calibrate);

@@ -77,7 +77,24 @@ struct BoardConfig {
   struct Stage {
     double min_workspace_time_s;
     double min_faces_seen_fraction;
+    bool fuse_markers_in_stage2;  // false: the paper's T_L3 (stage 2 on VO and nav sensors alone)
   } stage;
+  struct Vision {                 // the vision worker (vision/pipeline/vision_pipeline.h)
+    std::string vo_mode;          // adaptive | all | orb | planes | none
+    double quality_threshold;     // m_I below it: plane VO
+    double quality_hysteresis;
+    bool planes_when_orb_lost;    // adaptive: plane VO for a pair the ORB VO could not track
+    int orb_max_tracked;          // tracked ORB count scoring 1 in m_I
+    std::string dense_method;     // elas | sgbm | sgbm-wls
+    int dense_scale_down;         // 1 or 2
+    int dense_disparities;        // at the reduced size
+    bool filter_with_map;
+    double map_resolution_m;
+    double map_filter_distance_m;
+    int map_every_n_frames;
+    int map_min_frames;
+    int map_min_voxels;
+  } vision;
   struct Sources {                // where `deepnav run` takes its inputs (board/service/README.md)
     std::string replay_path;      // recording played as the sensors, relative to the board file
     std::string camera_left;      // devices, checked by the board validation; empty: not fitted

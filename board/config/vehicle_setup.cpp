@@ -4,6 +4,7 @@
 
 #include "board/config/panel_file.h"
 #include "board/config/text_file.h"
+#include "drivers/clock/monotonic_clock.h"
 
 namespace deepnav {
 
@@ -59,6 +60,31 @@ VisionPipelineConfig visionConfig(const VehicleSetup& s) {
   v.markers.camera.fy_px = s.config.camera.fy_px;
   v.markers.camera.cx_px = s.config.camera.cx_px;
   v.markers.camera.cy_px = s.config.camera.cy_px;
+  const BoardConfig::Camera& cam = s.config.camera;
+  v.channels = cam.channels;
+  v.rig.fx_px = cam.fx_px;
+  v.rig.fy_px = cam.fy_px;
+  v.rig.cx_px = cam.cx_px;
+  v.rig.cy_px = cam.cy_px;
+  v.rig.baseline_m = cam.baseline_m;
+  const BoardConfig::Vision& c = s.config.vision;
+  parseVoMode(c.vo_mode, &v.modality.mode);  // the table admits only the valid choices
+  v.modality.threshold = c.quality_threshold;
+  v.modality.hysteresis = c.quality_hysteresis;
+  v.modality.planes_when_orb_lost = c.planes_when_orb_lost;
+  v.orb_max_tracked = c.orb_max_tracked;
+  v.dense.method = c.dense_method == "sgbm"       ? DenseStereoMethod::kSgbm
+                   : c.dense_method == "sgbm-wls" ? DenseStereoMethod::kSgbmWls
+                                                  : DenseStereoMethod::kElas;
+  v.dense.scale_down = c.dense_scale_down;
+  v.dense.num_disparities = c.dense_disparities;
+  v.filter_with_map = c.filter_with_map;
+  v.workspace.map.resolution_m = c.map_resolution_m;
+  v.workspace.map.filter_distance_m = c.map_filter_distance_m;
+  v.workspace.insert_every_n_frames = c.map_every_n_frames;
+  v.workspace.min_frames = c.map_min_frames;
+  v.workspace.min_voxels = c.map_min_voxels;
+  v.clock_us = &monotonicUs;
   return v;
 }
 

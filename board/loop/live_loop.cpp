@@ -34,6 +34,11 @@ bool LiveLoop::init(const VehicleSetup& setup, const std::string& recording_path
   stats_task_ = scheduler_.findTask("stats");
   vision_task_ = scheduler_.findTask("vision");
   if (!vision_.init(visionConfig(setup), error)) return false;
+  if (!feedback_.allocate(PoseHistory::kCapacity)) {
+    if (error) *error = "loop: cannot allocate the nav-to-vision feedback ring";
+    return false;
+  }
+  vision_context_.init(robotFromCamera(c));
   recording_ = !recording_path.empty() && c.recording.enabled;
   sink_ = nullptr;
   if (recording_) {
@@ -117,6 +122,7 @@ void LiveLoop::runTick(TimeUs t_us) {
   VisionResult v;
   while (vision_results_.tryPop(v)) core_.consume(v);
   const NavSolution& solution = core_.tick(t_us);
+  feedback_.push(core_.feedback());  // full ring (vision stalled > 2.5 s): the oldest poses are lost
   publish(solution);
   if (observer_) observer_->onTick(solution, core_.counters());
 }
@@ -154,9 +160,11 @@ void LiveLoop::visionThread() {
     }
     const StereoFrame& frame = inputs_.pool.frame(index);
     if (recording_) recorder_.recordFrame(frame, index);
+    NavFeedback f;
+    while (feedback_.tryPop(f)) vision_context_.push(f);
     VisionResult result;
     const TimeUs start = monotonicUs();
-    vision_.process(frame, &result);
+    vision_.process(frame, vision_context_.contextAt(frame.t_us), &result);
     const TimeUs elapsed = monotonicUs() - start;
     result.processing_us = static_cast<std::uint32_t>(elapsed);
     scheduler_.recordRun(vision_task_, elapsed);

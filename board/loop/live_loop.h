@@ -71,6 +71,8 @@ class LiveLoop {
 
   LiveInputs inputs_;
   SpscRing<VisionResult> vision_results_;
+  SpscRing<NavFeedback> feedback_;          // loop thread -> vision worker, one per tick
+  VisionContextSource vision_context_;      // vision worker only
   QueuedRecorder recorder_;
   RecordSink* sink_ = nullptr;
   NavCore core_;

@@ -32,7 +32,13 @@ bool NavCore::init(const VehicleSetup& setup, RecordSink* sink, std::string* err
   solution_ = NavSolution{};
   poses_.clear();
   has_panel_ = setup.has_panel;
+  feedback_ = NavFeedback{};
+  map_ready_ = false;
+  workspace_restored_ = false;
   const BoardConfig& c = setup.config;
+  fuse_markers_in_stage2_ = c.stage.fuse_markers_in_stage2;
+  // One clone less than the EKF holds: the new pair's clone is taken after the oldest is released.
+  vo_.init(robotFromCamera(c), c.ekf.max_clones);
   StageConfig stage;
   stage.min_workspace_time_s = c.stage.min_workspace_time_s;
   stage.min_faces_seen_fraction = c.stage.min_faces_seen_fraction;
@@ -55,7 +61,10 @@ void NavCore::count(FuseResult r) {
 void NavCore::consumeVision(const VisionResult& v) {
   ++counters_.vision;
   if (v.frame_ok && v.image_quality >= 0.0) image_quality_ = v.image_quality;
-  if (has_panel_) markers_.onVision(v, poses_, &ekf_);
+  if (v.frame_ok) map_ready_ = v.map_ready;
+  const bool stage2 = stage_.stage() == NavStage::kOptimised;
+  if (has_panel_) markers_.onVision(v, poses_, &ekf_, !stage2 || fuse_markers_in_stage2_);
+  vo_.onVision(v, stage2, &ekf_);
 }
 
 void NavCore::consume(const InputSample& sample) {
@@ -97,10 +106,18 @@ const NavSolution& NavCore::tick(TimeUs t_us) {
   StageInputs in;
   in.filter_aligned = ekf_.aligned();
   in.panel_fixed = has_panel_ && markers_.panelFixed();
-  in.map_ready = false;  // the stage-1 workspace map is not built yet: stage 2 is not entered
+  in.map_ready = map_ready_;
+  in.workspace_restored = workspace_restored_;
   in.faces_seen_fraction = has_panel_ ? markers_.facesSeenFraction() : 0.0;
   solution_.stage = stage_.update(t_us, in);
   if (in.panel_fixed) solution_.status |= kStatusPanelFixed;
+  feedback_.t_us = t_us;
+  feedback_.has_pose = ekf_.aligned();
+  feedback_.p_robot_in_odom_m = solution_.p_robot_in_odom_m;
+  feedback_.q_odom_robot = solution_.q_odom_robot;
+  feedback_.stage = solution_.stage;
+  feedback_.panel_fixed = in.panel_fixed;
+  if (in.panel_fixed) feedback_.T_odom_panel = markers_.panelEstimator().estimate().T_odom_panel();
   if (sink_) sink_->recordSolution(solution_);
   return solution_;
 }

@@ -7,6 +7,8 @@
 #include "nav/ekf/ekf.h"
 #include "nav/pipeline/marker_fusion.h"
 #include "nav/pipeline/pose_history.h"
+#include "nav/pipeline/vo_fusion.h"
+#include "board/loop/vision_context_source.h"
 #include "nav/stage/stage_machine.h"
 #include "nav/types/input_sample.h"
 #include "nav/types/nav_solution.h"
@@ -41,6 +43,12 @@ class NavCore {
   const InputCounters& counters() const { return counters_; }
   const Ekf& ekf() const { return ekf_; }
   const MarkerFusion& markers() const { return markers_; }
+  MarkerFusion& markers() { return markers_; }
+  const VoFusion& vo() const { return vo_; }
+  // What the vision worker needs after this tick (stage, pose, panel pose).
+  const NavFeedback& feedback() const { return feedback_; }
+  // A saved workspace was loaded: the stage machine may enter stage 2 without building a new map.
+  void setWorkspaceRestored(bool restored) { workspace_restored_ = restored; }
   bool hasPanel() const { return has_panel_; }
 
  private:
@@ -50,7 +58,12 @@ class NavCore {
   Ekf ekf_;
   PoseHistory poses_;
   MarkerFusion markers_;
+  VoFusion vo_;
   StageMachine stage_;
+  NavFeedback feedback_;
+  bool map_ready_ = false;
+  bool workspace_restored_ = false;
+  bool fuse_markers_in_stage2_ = true;
   bool has_panel_ = false;
   RecordSink* sink_ = nullptr;
   NavSolution solution_;

@@ -2,6 +2,8 @@
 
 #include "board/config/recording_options.h"
 #include "board/config/text_file.h"
+#include "board/config/board_overrides.h"
+#include "board/replay/workspace_files.h"
 
 #include <cstdio>
 #include <filesystem>
@@ -33,6 +35,7 @@ struct BenchRun {
   RecordingWriter writer;
   NavCore core;
   VisionPipeline vision;
+  VisionContextSource context;
   SpscRing<PendingVision> pending;
   Scheduler scheduler;
   int nav_task = 0;
@@ -46,7 +49,10 @@ struct BenchRun {
 };
 
 bool initRun(const ReplayOptions& o, const RecordingReader& reader, BenchRun* run, std::string* error) {
-  if (!loadReplaySetup(o.board_path, reader, o.input_path, &run->setup, error)) return false;
+  if (!loadReplaySetup(o.board_path, reader, o.input_path, &run->setup, error) ||
+      !applyBoardOverrides(o.overrides, &run->setup, error)) {
+    return false;
+  }
   const BoardConfig& c = run->setup.config;
   const TaskSpec table[] = {
       {"nav", c.loop.rate_hz, c.loop.budget_us, false},
@@ -66,7 +72,13 @@ bool initRun(const ReplayOptions& o, const RecordingReader& reader, BenchRun* ru
     return false;
   }
   if (!run->vision.init(visionConfig(run->setup), error)) return false;
-  return run->core.init(run->setup, &run->writer, error);
+  run->context.init(robotFromCamera(c));
+  if (!run->core.init(run->setup, &run->writer, error)) return false;
+  if (o.workspace_in.empty()) return true;
+  if (!loadWorkspace(o.workspace_in, &run->vision.workspace(), error)) return false;
+  run->core.setWorkspaceRestored(true);
+  run->summary->workspace_restored = true;
+  return true;
 }
 
 void noteTime(BenchRun* run, TimeUs t_us) {
@@ -80,6 +92,7 @@ void tickAt(BenchRun* run, TimeUs t_us) {
   const TimeUs start = monotonicUs();
   const NavSolution& s = run->core.tick(t_us);
   run->scheduler.recordRun(run->nav_task, monotonicUs() - start);
+  run->context.push(run->core.feedback());
   const double dive_s = usToS(s.t_us - run->first_us);
   if ((s.status & kStatusPanelFixed) && run->summary->panel_fixed_at_s < 0) run->summary->panel_fixed_at_s = dive_s;
   if (s.stage == NavStage::kOptimised && run->summary->stage2_at_s < 0) run->summary->stage2_at_s = dive_s;
@@ -106,12 +119,32 @@ void advanceTicksTo(BenchRun* run, TimeUs t_us) {
   }
 }
 
+void noteFrame(BenchRun* run, const VisionContext& context, const VisionResult& r, TimeUs elapsed_us) {
+  FrameStat f;
+  f.t_s = usToS(r.t_us);
+  f.stage = static_cast<int>(context.stage);
+  f.image_quality = r.image_quality;
+  f.selected = static_cast<int>(r.vo_selected);
+  f.orb_vo = r.vo_orb.valid;
+  f.planes_vo = r.vo_planes.valid;
+  f.orb_tracked = r.orb_tracked;
+  f.planes = r.planes;
+  f.markers = r.marker_count;
+  f.orb_us = r.orb_us;
+  f.planes_us = r.planes_us;
+  f.map_us = r.map_us;
+  f.total_us = static_cast<std::uint32_t>(elapsed_us);
+  run->summary->frame_stats.push_back(f);
+}
+
 void runVision(BenchRun* run, const StereoFrame& frame) {
   run->writer.recordFrame(frame, -1);
   PendingVision p;
   const TimeUs start = monotonicUs();
-  run->vision.process(frame, &p.result);
+  const VisionContext context = run->context.contextAt(frame.t_us);
+  run->vision.process(frame, context, &p.result);
   const TimeUs elapsed = monotonicUs() - start;
+  noteFrame(run, context, p.result, elapsed);
   run->scheduler.recordRun(run->vision_task, elapsed);
   p.result.processing_us = static_cast<std::uint32_t>(elapsed);
   // Vision results reach the loop a fixed latency after capture, so the replay is deterministic.
@@ -222,6 +255,18 @@ bool runBenchReplay(const ReplayOptions& o, ReplaySummary* summary, std::string*
   summary->read = reader.stats();
   summary->warnings = reader.warnings();
   summary->loop = run->scheduler.stats();
+  summary->vo = run->core.vo().counters();
+  summary->map_frames = run->vision.workspace().frames();
+  summary->map_voxels = run->vision.workspace().voxels();
+  if (!o.workspace_out.empty() && !summary->reproduce) {
+    std::string ws_error;
+    const auto& estimator = run->core.markers().panelEstimator();
+    if (!estimator.fixed() || run->vision.workspace().voxels() == 0) {
+      summary->warnings.push_back("workspace not saved: the panel was never fixed or the map is empty");
+    } else if (!saveWorkspace(o.workspace_out, run->vision.workspace(), estimator.estimate().T_odom_panel(), &ws_error)) {
+      summary->warnings.push_back(ws_error);
+    }
+  }
   run->writer.recordLoopStats(run->last_us, summary->loop);
   std::string close_error;
   if (!run->writer.close(&close_error)) summary->warnings.push_back("replay.mcap: " + close_error);

@@ -20,6 +20,23 @@ struct ReplayOptions {
   bool record_images = false;    // copy the stereo images into replay.mcap
   bool progress = true;          // per-stage progress lines on stderr
   bool realtime = false;         // play at the recorded speed through the threaded runtime (realtime_replay.h)
+  std::vector<std::string> overrides;  // board "key=value" overrides (board_overrides.h), e.g. vision.vo_mode=all
+  std::string workspace_in;      // saved workspace to start from (stage 2 after the panel is found again)
+  std::string workspace_out;     // where to save the workspace at the end (empty: not saved)
+};
+
+// One stereo pair as the vision worker handled it (frames.csv; the report's Fig. 5 and Table III(a)).
+struct FrameStat {
+  double t_s = 0.0;
+  int stage = 0;               // NavStage the worker saw
+  double image_quality = -1.0;
+  int selected = 0;            // VoSource chosen
+  bool orb_vo = false;         // an ORB relative pose was produced
+  bool planes_vo = false;      // a plane relative pose was produced
+  int orb_tracked = 0;
+  int planes = 0;
+  int markers = 0;
+  std::uint32_t orb_us = 0, planes_us = 0, map_us = 0, total_us = 0;
 };
 
 struct ReplaySummary {
@@ -35,6 +52,11 @@ struct ReplaySummary {
   PanelPoseCounters panel;           // stage-1 panel pose estimation
   double panel_fixed_at_s = -1.0;    // dive time when the panel pose was fixed; -1: never
   double stage2_at_s = -1.0;         // dive time when stage 2 began; -1: never
+  VoFusionCounters vo;               // VO relative poses offered to and fused by the EKF
+  std::vector<FrameStat> frame_stats;
+  bool workspace_restored = false;
+  int map_frames = 0;
+  int map_voxels = 0;
   ReplayReadStats read;
   LoopStats loop;
   std::vector<std::string> warnings;

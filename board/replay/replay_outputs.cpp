@@ -65,10 +65,28 @@ std::string jsonString(const std::string& s) {
   return out + "\"";
 }
 
+bool writeFrameStats(const std::string& path, const std::vector<FrameStat>& frames, std::string* error) {
+  std::ofstream out(path);
+  out << "t_s,stage,image_quality,selected,orb_vo,planes_vo,orb_tracked,planes,markers,orb_us,planes_us,map_us,total_us\n";
+  char line[256];
+  for (const FrameStat& f : frames) {
+    std::snprintf(line, sizeof line, "%.6f,%d,%.6f,%d,%d,%d,%d,%d,%d,%u,%u,%u,%u\n", f.t_s, f.stage, f.image_quality,
+                  f.selected, f.orb_vo ? 1 : 0, f.planes_vo ? 1 : 0, f.orb_tracked, f.planes, f.markers, f.orb_us,
+                  f.planes_us, f.map_us, f.total_us);
+    out << line;
+  }
+  if (!out.flush()) {
+    if (error) *error = path + ": cannot write";
+    return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 bool writeReplayOutputs(const std::string& dir, const ReplaySummary& s, std::string* error) {
   if (!writeTum(dir + "/trajectory.tum", s.estimate, error)) return false;
+  if (!s.frame_stats.empty() && !writeFrameStats(dir + "/frames.csv", s.frame_stats, error)) return false;
   if (s.has_truth && !writeTum(dir + "/truth.tum", s.truth, error)) return false;
   std::ofstream out(dir + "/summary.json");
   if (!out) {
@@ -86,6 +104,11 @@ bool writeReplayOutputs(const std::string& dir, const ReplaySummary& s, std::str
       << s.panel_fixed_at_s << ", \"poses_fused\": " << s.markers.fused << ", \"poses_accepted\": "
       << s.markers.accepted << "},\n";
   out << "  \"stage2_at_s\": " << s.stage2_at_s << ",\n";
+  out << "  \"workspace\": {\"restored\": " << (s.workspace_restored ? "true" : "false")
+      << ", \"map_frames\": " << s.map_frames << ", \"map_voxels\": " << s.map_voxels << "},\n";
+  out << "  \"vo\": {\"offered\": " << s.vo.measurements << ", \"accepted\": " << s.vo.accepted
+      << ", \"rejected\": " << s.vo.rejected << ", \"no_clone\": " << s.vo.no_clone << ", \"accepted_orb\": "
+      << s.vo.accepted_by_source[1] << ", \"accepted_planes\": " << s.vo.accepted_by_source[2] << "},\n";
   out << "  \"read\": {\"messages\": " << s.read.messages << ", \"bad_messages\": " << s.read.bad_messages
       << ", \"unknown_topic\": " << s.read.unknown_topic << ", \"incomplete_frames\": " << s.read.incomplete_frames
       << "},\n";
@@ -130,6 +153,15 @@ std::string formatReplaySummary(const ReplaySummary& s) {
                                         : "not fixed",
                 s.markers.fused, s.markers.accepted);
   o << line;
+  if (s.stage2_at_s >= 0 || s.vo.measurements > 0) {
+    std::snprintf(line, sizeof line,
+                  "stage 2 %s%s; map %d clouds, %d voxels; VO: %u offered, %u fused (orb %u, planes %u), %u rejected, "
+                  "%u without clone\n",
+                  s.stage2_at_s >= 0 ? ("from " + std::to_string(s.stage2_at_s) + " s").c_str() : "never entered",
+                  s.workspace_restored ? " (restored workspace)" : "", s.map_frames, s.map_voxels, s.vo.measurements,
+                  s.vo.accepted, s.vo.accepted_by_source[1], s.vo.accepted_by_source[2], s.vo.rejected, s.vo.no_clone);
+    o << line;
+  }
   if (s.has_truth) {
     o << "\n| metric | mean | std | rms | max |\n|---|---|---|---|---|\n";
     const auto& p = s.errors.position;

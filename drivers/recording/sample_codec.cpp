@@ -202,6 +202,35 @@ bool readMarker(CdrReader& r, MarkerObservation* m) {
          r.f64(&m->obliqueness_rad);
 }
 
+bool readVoSource(std::uint8_t raw, VoSource* source) {
+  if (raw > static_cast<std::uint8_t>(VoSource::kPlanes)) return false;
+  *source = static_cast<VoSource>(raw);
+  return true;
+}
+
+void writeVo(CdrWriter& w, const VoMeasurement& m) {
+  w.boolean(m.valid);
+  w.u8(static_cast<std::uint8_t>(m.source));
+  w.i64(m.t_reference_us);
+  writeQuat(w, m.q_cama_camb);
+  writeVec3(w, m.p_camb_in_cama_m);
+  w.boolean(m.has_translation);
+  for (int i = 0; i < 36; ++i) w.f64(m.cov.data()[i]);
+  w.i32(m.support);
+}
+
+bool readVo(CdrReader& r, VoMeasurement* m) {
+  std::uint8_t source = 0;
+  if (!r.boolean(&m->valid) || !r.u8(&source) || !readVoSource(source, &m->source) || !r.i64(&m->t_reference_us) ||
+      !readQuat(r, &m->q_cama_camb) || !readVec3(r, &m->p_camb_in_cama_m) || !r.boolean(&m->has_translation)) {
+    return false;
+  }
+  for (int i = 0; i < 36; ++i) {
+    if (!r.f64(&m->cov.data()[i])) return false;
+  }
+  return r.i32(&m->support);
+}
+
 void writeVision(CdrWriter& w, const VisionResult& s) {
   writeHeader(w, s.t_us, Topic::kVisionResult);
   w.u64(s.sequence);
@@ -215,6 +244,17 @@ void writeVision(CdrWriter& w, const VisionResult& s) {
   w.sequenceLength(n);
   for (std::size_t i = 0; i < n; ++i) writeMarker(w, s.markers[i]);
   w.i32(s.markers_dropped);
+  w.i32(s.orb_tracked);
+  w.u8(static_cast<std::uint8_t>(s.vo_selected));
+  writeVo(w, s.vo_orb);
+  writeVo(w, s.vo_planes);
+  w.i32(s.planes);
+  w.i32(s.map_frames);
+  w.i32(s.map_voxels);
+  w.boolean(s.map_ready);
+  w.u32(s.orb_us);
+  w.u32(s.planes_us);
+  w.u32(s.map_us);
 }
 
 bool readVision(CdrReader& r, VisionResult* s) {
@@ -228,7 +268,13 @@ bool readVision(CdrReader& r, VisionResult* s) {
   for (std::uint32_t i = 0; i < n; ++i) {
     if (!readMarker(r, &s->markers[i])) return false;
   }
-  return r.i32(&s->markers_dropped);
+  std::uint8_t selected = 0;
+  if (!r.i32(&s->markers_dropped) || !r.i32(&s->orb_tracked) || !r.u8(&selected) || !readVoSource(selected, &s->vo_selected) ||
+      !readVo(r, &s->vo_orb) || !readVo(r, &s->vo_planes) || !r.i32(&s->planes) || !r.i32(&s->map_frames) ||
+      !r.i32(&s->map_voxels) || !r.boolean(&s->map_ready)) {
+    return false;
+  }
+  return r.u32(&s->orb_us) && r.u32(&s->planes_us) && r.u32(&s->map_us);
 }
 
 struct InputWriter {

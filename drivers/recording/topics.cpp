@@ -24,6 +24,9 @@ constexpr std::array<TopicInfo, kTopicCount> kTopics = {{
     {"/nav/solution", "deepnav_msgs/msg/NavSolution", "odom"},
     {"/nav/loop_stats", "deepnav_msgs/msg/LoopStats", ""},
     {"/truth/odometry", "nav_msgs/msg/Odometry", "odom"},
+    {"/truth/frame", "deepnav_msgs/msg/FrameTruth", "odom"},
+    {"/truth/depth", "sensor_msgs/msg/Image", "camera_left"},
+    {"/truth/disparity", "sensor_msgs/msg/Image", "camera_left"},
 }};
 
 // The project's own messages. Units in comments, frames as in the README.
@@ -50,7 +53,18 @@ const ros::MsgDefinitions& projectDefinitions() {
       {"deepnav_msgs/VisionResult",
        "std_msgs/Header header # stamp = capture time of the pair\nuint64 sequence\n"
        "uint32 processing_us\nbool frame_ok\nfloat64 mdm_f1\nfloat64 mdm_f2\nfloat64 mdm_f3\n"
-       "float64 image_quality # [0, 1], -1 = none\nMarkerObservation[] markers\nint32 markers_dropped\n"},
+       "float64 image_quality # [0, 1], -1 = none\nMarkerObservation[] markers\nint32 markers_dropped\n"
+       "int32 orb_tracked # ORB features tracked in this pair\n"
+       "uint8 vo_selected # modality chosen: 0 none, 1 orb, 2 planes\n"
+       "VoMeasurement vo_orb\nVoMeasurement vo_planes\nint32 planes # extracted in this pair\n"
+       "int32 map_frames # clouds in the stage-1 workspace map\nint32 map_voxels # occupied voxels\n"
+       "bool map_ready\nuint32 orb_us\nuint32 planes_us\nuint32 map_us # worker time per part\n"},
+      {"deepnav_msgs/VoMeasurement",
+       "bool valid\nuint8 source # 1 orb, 2 planes\nint64 t_reference_us # capture time of the reference pair\n"
+       "geometry_msgs/Quaternion orientation # left camera at this pair in the camera at the reference\n"
+       "geometry_msgs/Vector3 position # m, same frames\nbool has_translation\n"
+       "float64[36] covariance # x y z rx ry rz: translation in the reference camera, rotation about this camera\n"
+       "int32 support # tracked features (orb) or matched planes (planes)\n"},
       {"deepnav_msgs/MarkerObservation",
        "int32 id # ArUco id\nfloat64[8] corners # px: u, v of top-left, top-right, bottom-right, bottom-left\n"
        "geometry_msgs/Quaternion orientation # marker in the camera optical frame (best IPPE solution)\n"
@@ -73,6 +87,13 @@ const ros::MsgDefinitions& projectDefinitions() {
        "uint8 stage # 0 init, 1 workspace definition, 2 optimised localisation\n"
        "uint32 status # NavStatusBits\nuint32 faults # stale/rejected bit pairs per source\n"
        "float64 image_quality\nuint32 rejected_total\nuint32 dropped_late_total\n"},
+      {"deepnav_msgs/FrameTruth",
+       "std_msgs/Header header # stamp = capture time of the stereo pair (as its StereoInfo)\n"
+       "uint64 sequence # the stereo pair's sequence\n"
+       "geometry_msgs/Pose robot # robot (FLU) in odom (ENU), m\n"
+       "geometry_msgs/Pose camera_left # left optical frame (z forward, x right, y down) in odom\n"
+       "geometry_msgs/Pose camera_right # right optical frame in odom\n"
+       "int32[] visible_marker_ids # ascending; all 4 corners in the left image and unobstructed\n"},
       {"deepnav_msgs/LoopStats",
        "std_msgs/Header header\nstring[] task_names\nuint64[] runs\nuint64[] overruns\n"
        "float64[] mean_us\nint64[] max_us\nuint64 ticks\nuint64 late_ticks\nint64 max_lateness_us\n"},

@@ -37,7 +37,7 @@ void MarkerFusion::fuseMarker(TimeUs t_us, const MarkerObservation& obs, const P
   if (ekf->fusePose(m).status == FuseStatus::kAccepted) ++counters_.accepted;
 }
 
-void MarkerFusion::onVision(const VisionResult& v, const PoseHistory& poses, Ekf* ekf) {
+void MarkerFusion::onVision(const VisionResult& v, const PoseHistory& poses, Ekf* ekf, bool fuse_robot_pose) {
   if (!v.frame_ok || v.marker_count <= 0) return;
   ++counters_.images;
   Eigen::Isometry3d T_odom_robot;
@@ -52,7 +52,7 @@ void MarkerFusion::onVision(const VisionResult& v, const PoseHistory& poses, Ekf
     }
     faces_seen_mask_ |= 1u << static_cast<unsigned>(marker->face);
     if (estimator_.fixed()) {
-      fuseMarker(v.t_us, obs, *marker, ekf);
+      if (fuse_robot_pose) fuseMarker(v.t_us, obs, *marker, ekf);
     } else if (have_pose) {
       estimator_.addObservation(v.t_us, obs, *marker, T_odom_robot, T_robot_cam_);
     } else {

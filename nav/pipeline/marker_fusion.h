@@ -33,7 +33,9 @@ class MarkerFusion {
             const MarkerCovarianceConfig& covariance_config, std::string* error);
 
   // One vision result; poses is the recent trajectory of the filter (for T_odom_robot at capture).
-  void onVision(const VisionResult& v, const PoseHistory& poses, Ekf* ekf);
+  // fuse_robot_pose false: once the panel is fixed the markers are seen and counted but not fused (the
+  // paper's T_L3 test, stage 2 without markers).
+  void onVision(const VisionResult& v, const PoseHistory& poses, Ekf* ekf, bool fuse_robot_pose = true);
 
   bool panelFixed() const { return estimator_.fixed(); }
   const PanelPoseEstimator& panelEstimator() const { return estimator_; }

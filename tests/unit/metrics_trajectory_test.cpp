@@ -91,6 +91,28 @@ TEST(MetricsSmoothness, ConstantAxesAreLeftOutAndShortInputsGiveNothing) {
   EXPECT_NEAR(r1, 0.25, 1e-12);  // (-1.5*-0.5 + -0.5*0.5 + 0.5*1.5) / 5
 }
 
+TEST(MetricsSmoothness, AnAxisWithoutMotionDoesNotDragTheScoreDown) {
+  // GIVEN a vehicle circling at 0.2 m/s (1.5 m radius) at constant depth, sampled at 100 Hz, whose
+  // estimated z holds only 0.1 mm of white noise (the depth corrections)
+  std::vector<Eigen::Vector3d> p;
+  std::mt19937_64 rng(5);
+  std::normal_distribution<double> noise_m(0.0, 0.0001);
+  const double w_radps = 0.2 / 1.5;
+  for (int k = 0; k < 6000; ++k) {
+    const double t = 0.01 * k;
+    p.emplace_back(1.5 * std::cos(w_radps * t), 1.5 * std::sin(w_radps * t), -100.0 + noise_m(rng));
+  }
+  // WHEN m_A is computed THEN z alone is jitter (r_z ~ -0.5), which an unweighted mean over the axes
+  // would count as a third of the score; pooled by increment variance the score stays that of the motion
+  const Smoothness s = smoothnessMa(p);
+  EXPECT_EQ(s.axes_used, 3);
+  EXPECT_NEAR(s.r_axis.z(), -0.5, 0.05);
+  EXPECT_GT(s.r_axis.x(), 0.99);
+  EXPECT_LT(s.r_axis.mean(), 0.7);
+  EXPECT_GT(s.m_a, 0.95);
+  EXPECT_LT(s.m_a, 1.0);
+}
+
 TEST(MetricsAssociation, ParsesTumLines) {
   const auto p = parseTumLine("1305031102.175304 1.5 -2 0.25 0 0 0.7071067811865476 0.7071067811865476\r\n");
   ASSERT_TRUE(p.has_value());

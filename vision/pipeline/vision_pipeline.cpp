@@ -3,7 +3,35 @@
 #include <algorithm>
 #include <string>
 
+#include "vision/iqa/image_quality_score.h"
+
 namespace deepnav {
+
+namespace {
+
+// Worker time of one part, for Table III(a), from the clock board/ hands in (none: 0). The outputs of the
+// pipeline never depend on it.
+class PartTimer {
+ public:
+  explicit PartTimer(VisionClockUs clock) : clock_(clock), start_us_(clock ? clock() : 0) {}
+  std::uint32_t elapsedUs() const { return clock_ ? static_cast<std::uint32_t>(clock_() - start_us_) : 0u; }
+
+ private:
+  VisionClockUs clock_;
+  TimeUs start_us_;
+};
+
+StereoGeometry geometryOf(const StereoRig& rig) {
+  StereoGeometry g;
+  g.fx_px = rig.fx_px;
+  g.fy_px = rig.fy_px;
+  g.cx_px = rig.cx_px;
+  g.cy_px = rig.cy_px;
+  g.baseline_m = rig.baseline_m;
+  return g;
+}
+
+}  // namespace
 
 bool VisionPipeline::init(const VisionPipelineConfig& config, std::string* error) {
   if (config.width_px <= 0 || config.height_px <= 0) {
@@ -11,7 +39,22 @@ bool VisionPipeline::init(const VisionPipelineConfig& config, std::string* error
     return false;
   }
   config_ = config;
-  return !config.detect_markers || detector_.init(config.markers, error);
+  config_.rig.width_px = config.width_px;
+  config_.rig.height_px = config.height_px;
+  config_.dense.channels = config.channels;
+  frames_seen_ = 0;
+  if (config.detect_markers && !detector_.init(config.markers, error)) return false;
+  if (config.run_orb && !orb_.init(config.orb, config_.rig, error)) return false;
+  if (config.orb_max_tracked < 1) {
+    if (error) *error = "vision.orb_max_tracked must be >= 1";
+    return false;
+  }
+  return selector_.init(config.modality, error) &&
+         dense_.init(config_.dense, geometryOf(config_.rig), config.width_px, config.height_px, error) &&
+         dense_.allocateCloud(&cloud_) &&
+         plane_vo_.init(config.planes, dense_.geometry(), dense_.rows(), dense_.cols(), config.dense.cloud_step_px,
+                        error) &&
+         workspace_.init(config.workspace, error);
 }
 
 void VisionPipeline::detectMarkers(const StereoFrame& frame, VisionResult* result) {
@@ -22,7 +65,69 @@ void VisionPipeline::detectMarkers(const StereoFrame& frame, VisionResult* resul
   result->markers_dropped = observations_.count - n + observations_.dropped;
 }
 
-void VisionPipeline::process(const StereoFrame& frame, VisionResult* result) {
+void VisionPipeline::runOrb(const StereoFrame& frame, VisionResult* result) {
+  if (!config_.run_orb) return;
+  const PartTimer timer(config_.clock_us);
+  orb_.process(frame, &orb_out_);
+  result->orb_us = timer.elapsedUs();
+  result->orb_tracked = orb_out_.hasRelativePose() || orb_out_.status == OrbVoStatus::kInitialised
+                            ? orb_out_.tracked_features
+                            : 0;
+}
+
+void VisionPipeline::buildWorkspace(const StereoFrame& frame, const VisionContext& context, VisionResult* result) {
+  const std::uint64_t index = frames_seen_;
+  if (context.stage != NavStage::kWorkspace || !context.has_pose || !workspace_.wantsFrame(index)) return;
+  const PartTimer timer(config_.clock_us);
+  if (dense_.compute(frame.left, frame.right, &cloud_)) workspace_.insert(cloud_, context.T_odom_cam);
+  result->map_us = timer.elapsedUs();
+}
+
+void VisionPipeline::runPlanes(const StereoFrame& frame, const VisionContext& context, VisionResult* result) {
+  const PartTimer timer(config_.clock_us);
+  bool ok = dense_.compute(frame.left, frame.right, &cloud_);
+  if (ok && config_.filter_with_map) {
+    ok = context.has_pose &&
+         workspace_.filter(context.T_odom_cam, context.panel_fixed, context.T_odom_panel, &cloud_) >= 0;
+  }
+  if (ok && plane_vo_.process(frame.t_us, cloud_, &plane_out_)) result->vo_planes = plane_out_.vo;
+  if (!ok) plane_vo_.reset();  // a frame without planes breaks the chain
+  result->planes = ok ? plane_out_.planes : 0;
+  result->planes_us = timer.elapsedUs();
+}
+
+void VisionPipeline::runStage2(const StereoFrame& frame, const VisionContext& context, VisionResult* result) {
+  if (context.stage != NavStage::kOptimised) {
+    selector_.reset();
+    plane_vo_.reset();
+    return;
+  }
+  VoSource selected = selector_.select(result->image_quality);
+  if (selected == VoSource::kOrb && config_.modality.mode == VoMode::kAdaptive &&
+      config_.modality.planes_when_orb_lost && !(config_.run_orb && orb_out_.hasRelativePose())) {
+    selected = VoSource::kPlanes;
+  }
+  result->vo_selected = selected;
+  const bool all = config_.modality.mode == VoMode::kAll;
+  if ((selected == VoSource::kOrb || all) && config_.run_orb && orb_out_.hasRelativePose()) {
+    VoMeasurement& vo = result->vo_orb;
+    vo.valid = true;
+    vo.source = VoSource::kOrb;
+    vo.t_reference_us = orb_out_.t_reference_us;
+    vo.q_cama_camb = orb_out_.q_cama_camb;
+    vo.p_camb_in_cama_m = orb_out_.p_camb_in_cama_m;
+    vo.has_translation = true;
+    vo.cov = orb_out_.cov;
+    vo.support = orb_out_.tracked_features;
+  }
+  if (selector_.runPlanes(selected)) {
+    runPlanes(frame, context, result);
+  } else {
+    plane_vo_.reset();
+  }
+}
+
+void VisionPipeline::process(const StereoFrame& frame, const VisionContext& context, VisionResult* result) {
   *result = VisionResult{};
   result->t_us = frame.t_us;
   result->sequence = frame.sequence;
@@ -34,9 +139,16 @@ void VisionPipeline::process(const StereoFrame& frame, VisionResult* result) {
   result->mdm_f1 = mdm.f1;
   result->mdm_f2 = mdm.f2;
   result->mdm_f3 = mdm.f3;
-  // Until the ORB VO reports its tracked-feature count, the quality is the MDM part of m_I alone.
-  result->image_quality = mdm.score;
   detectMarkers(frame, result);
+  runOrb(frame, result);
+  result->image_quality = config_.run_orb ? imageQualityScore(mdm, result->orb_tracked, config_.orb_max_tracked)
+                                          : mdm.score;
+  buildWorkspace(frame, context, result);
+  runStage2(frame, context, result);
+  result->map_frames = workspace_.frames();
+  result->map_voxels = workspace_.voxels();
+  result->map_ready = workspace_.ready();
+  ++frames_seen_;
 }
 
 }  // namespace deepnav

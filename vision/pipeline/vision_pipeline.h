@@ -1,37 +1,83 @@
 #pragma once
+#include <iosfwd>
 #include <string>
 
 #include "nav/types/vision_result.h"
+#include "vision/cloud/stereo_cloud.h"
 #include "vision/iqa/mdm.h"
 #include "vision/markers/marker_detector.h"
+#include "vision/orbvo/orb_stereo_odometry.h"
+#include "vision/orbvo/orb_vo_config.h"
+#include "vision/orbvo/stereo_rig.h"
+#include "vision/pipeline/modality_selector.h"
+#include "vision/pipeline/vision_context.h"
+#include "vision/pipeline/workspace_model.h"
+#include "vision/planes/plane_odometry.h"
 #include "vision/types/stereo_frame.h"
 
 namespace deepnav {
 
+// Monotonic clock (us) for the per-part timing statistics; board/ supplies it.
+using VisionClockUs = TimeUs (*)();
+
 struct VisionPipelineConfig {
   int width_px = 688;
   int height_px = 516;
+  int channels = 1;
   bool detect_markers = false;   // when the vehicle has a panel description
   MarkerDetectorConfig markers;  // dictionary, marker size, rectified intrinsics
+  StereoRig rig;                 // rectified intrinsics and baseline
+  bool run_orb = true;           // ORB tracking on every pair (its count is part of m_I)
+  OrbVoConfig orb;
+  int orb_max_tracked = 300;     // tracked count that scores 1 in m_I
+  ModalityConfig modality;
+  StereoCloudConfig dense;       // dense stereo of the map and the plane VO
+  bool filter_with_map = true;   // stage 2: the plane VO's cloud keeps only points near the map
+  PlaneOdometryConfig planes;
+  WorkspaceBuildConfig workspace;
+  VisionClockUs clock_us = nullptr;  // per-part timing in VisionResult; nullptr: zeros
 };
 
-// Per-stereo-pair processing of the vision worker: checks the frame, scores image quality, and (as the
-// later stages land) detects markers and runs the selected visual odometry. Pure: the worker thread,
-// the frame pool and the clock belong to board/. All buffers are sized in init().
+// Per-stereo-pair processing of the vision worker, the paper's method on one pair:
+//   always: frame check, MDM, marker detection, ORB tracking (tracked count -> m_I);
+//   stage 1: every n-th pair, dense stereo -> cloud inserted in the workspace map at the camera pose;
+//   stage 2: modality selection on m_I; the ORB relative pose, or dense stereo -> cloud filtered by
+//            the map -> planes -> registration; both in the "all" mode.
+// Pure: the worker thread, the frame pool, the clock and the pose source belong to board/. All buffers
+// are sized in init(); the stage-1 octree grows within its configured bounds.
 class VisionPipeline {
  public:
   bool init(const VisionPipelineConfig& config, std::string* error);
 
   // Fills *result for one pair. Never throws; a bad frame gives frame_ok = false.
-  void process(const StereoFrame& frame, VisionResult* result);
+  void process(const StereoFrame& frame, const VisionContext& context, VisionResult* result);
+
+  WorkspaceModel& workspace() { return workspace_; }
+  const WorkspaceModel& workspace() const { return workspace_; }
+  const StereoCloud& dense() const { return dense_; }
+  const OrganizedCloud& lastCloud() const { return cloud_; }
+  const PlaneOdometry& planeOdometry() const { return plane_vo_; }
 
  private:
-  VisionPipelineConfig config_{};
   void detectMarkers(const StereoFrame& frame, VisionResult* result);
+  void runOrb(const StereoFrame& frame, VisionResult* result);
+  void buildWorkspace(const StereoFrame& frame, const VisionContext& context, VisionResult* result);
+  void runStage2(const StereoFrame& frame, const VisionContext& context, VisionResult* result);
+  void runPlanes(const StereoFrame& frame, const VisionContext& context, VisionResult* result);
 
+  VisionPipelineConfig config_{};
   MdmWorkspace mdm_ws_{};
   MarkerDetector detector_;
   MarkerObservations observations_;
+  OrbStereoOdometry orb_;
+  OrbVoOutput orb_out_;
+  ModalitySelector selector_;
+  StereoCloud dense_;
+  OrganizedCloud cloud_;
+  PlaneOdometry plane_vo_;
+  PlaneOdometryOutput plane_out_;
+  WorkspaceModel workspace_;
+  std::uint64_t frames_seen_ = 0;
 };
 
 }  // namespace deepnav

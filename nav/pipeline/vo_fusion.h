@@ -1,0 +1,54 @@
+#pragma once
+#include <array>
+#include <cstdint>
+
+#include <Eigen/Geometry>
+
+#include "nav/ekf/ekf.h"
+#include "nav/types/vision_result.h"
+
+namespace deepnav {
+
+struct VoFusionCounters {
+  std::uint32_t measurements = 0;  // VO results offered (valid)
+  std::uint32_t accepted = 0;
+  std::uint32_t rejected = 0;      // by the EKF gate, bad input, too late
+  std::uint32_t no_clone = 0;      // reference frame without a clone (before stage 2, or released)
+  std::uint32_t clones = 0;        // clones taken
+  std::array<std::uint32_t, 3> accepted_by_source{};  // index VoSource
+};
+
+// Stage 2 of the paper in the filter: each stereo pair's pose is cloned into the EKF state at its capture
+// time (stochastic cloning), and a VO result of a later pair, relative to the pose at an earlier pair's
+// capture time, is fused against that clone. Clones of the last `kept` pairs are kept (the ORB VO may
+// refer back to its last tracked pair); older ones are released (marginalised). Pure, no allocation.
+class VoFusion {
+ public:
+  void init(const Eigen::Isometry3d& T_robot_cam, int kept_clones);
+
+  // One vision result. active: stage 2 (otherwise every clone is released and nothing is fused).
+  void onVision(const VisionResult& v, bool active, Ekf* ekf);
+
+  const VoFusionCounters& counters() const { return counters_; }
+
+ private:
+  struct Slot {
+    bool used = false;
+    TimeUs t_us = 0;
+    std::uint32_t id = 0;
+  };
+  static constexpr int kMaxSlots = 8;
+
+  void fuse(const VoMeasurement& vo, TimeUs t_us, Ekf* ekf);
+  void cloneFrame(TimeUs t_us, Ekf* ekf);
+  void releaseAll(TimeUs t_us, Ekf* ekf);
+  const Slot* find(TimeUs t_us) const;
+
+  Eigen::Isometry3d T_robot_cam_ = Eigen::Isometry3d::Identity();
+  int kept_ = 3;
+  std::array<Slot, kMaxSlots> slots_{};
+  std::uint32_t next_id_ = 1;
+  VoFusionCounters counters_;
+};
+
+}  // namespace deepnav
