@@ -1,7 +1,10 @@
 #include "drivers/recording/recording_writer.h"
 
+#include <algorithm>
+
 #include "drivers/cdr/ros2msg_definitions.h"
 #include "drivers/recording/sample_codec.h"
+#include "drivers/recording/truth_codec.h"
 
 namespace deepnav {
 namespace {
@@ -31,7 +34,10 @@ bool RecordingWriter::open(const std::string& path, const RecordingOptions& opti
   const std::size_t image_bytes = static_cast<std::size_t>(options.image_width_px) *
                                   static_cast<std::size_t>(options.image_height_px) *
                                   static_cast<std::size_t>(options.image_channels);
-  w.max_message_bytes = image_bytes + kHeaderRoom;
+  const std::size_t depth_bytes = options.truth_maps ? static_cast<std::size_t>(options.image_width_px) *
+                                                          static_cast<std::size_t>(options.image_height_px) * 4u
+                                                    : 0u;
+  w.max_message_bytes = std::max(image_bytes, depth_bytes) + kHeaderRoom;
   buffer_.assign(w.max_message_bytes, 0);
   record_images_ = options.record_images;
   if (!writer_.open(path, w, error)) return false;
@@ -81,6 +87,13 @@ void RecordingWriter::recordFrame(const StereoFrame& frame, int /*pool_index*/) 
 
 void RecordingWriter::recordTruth(const TruthSample& truth) {
   put(Topic::kTruth, truth.t_us, encodeTruth(truth, buffer_.data(), buffer_.size()));
+}
+
+void RecordingWriter::recordFrameTruth(const FrameTruth& truth) {
+  put(Topic::kFrameTruth, truth.t_us, encodeFrameTruth(truth, buffer_.data(), buffer_.size()));
+  if (!truth.depth_m.empty()) put(Topic::kTruthDepth, truth.t_us, encodeTruthDepth(truth, buffer_.data(), buffer_.size()));
+  if (!truth.disparity_px.empty())
+    put(Topic::kTruthDisparity, truth.t_us, encodeTruthDisparity(truth, buffer_.data(), buffer_.size()));
 }
 
 void RecordingWriter::recordLoopStats(TimeUs t_us, const LoopStats& stats) {

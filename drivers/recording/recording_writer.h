@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "drivers/mcap/writer.h"
+#include "drivers/recording/frame_truth.h"
 #include "drivers/recording/record_sink.h"
 #include "drivers/recording/topics.h"
 #include "nav/types/loop_stats.h"
@@ -20,6 +21,7 @@ struct RecordingOptions {
   int image_height_px = 516;
   int image_channels = 1;
   bool record_images = true;
+  bool truth_maps = false;            // simulator: room for the float depth map of recordFrameTruth()
 };
 
 // Writes a deepnav recording: one MCAP channel per topic (topics.h), ROS 2 schemas, CDR messages.
@@ -36,6 +38,9 @@ class RecordingWriter : public RecordSink {
   void recordSolution(const NavSolution& solution) override;
   void recordFrame(const StereoFrame& frame, int pool_index) override;
   void recordTruth(const TruthSample& truth);
+  // Simulator ground truth of one stereo pair: /truth/frame, then /truth/depth and /truth/disparity
+  // when the truth holds maps (truth_codec.h). Maps need RecordingOptions::truth_maps.
+  void recordFrameTruth(const FrameTruth& truth);
   void recordLoopStats(TimeUs t_us, const LoopStats& stats);
   // Key/value metadata (scenario, seed, board...) stored as an MCAP Metadata record.
   bool recordMetadata(const std::string& name, const std::map<std::string, std::string>& values);

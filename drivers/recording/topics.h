@@ -22,6 +22,9 @@ enum class Topic : int {
   kNavSolution,    // deepnav_msgs/msg/NavSolution (bit-exact output; ends a loop tick)
   kLoopStats,      // deepnav_msgs/msg/LoopStats
   kTruth,          // nav_msgs/msg/Odometry, simulator ground truth
+  kFrameTruth,     // deepnav_msgs/msg/FrameTruth: true robot and camera poses, visible markers per stereo pair
+  kTruthDepth,     // sensor_msgs/msg/Image 32FC1: true depth of the left image, m, 0 = no surface
+  kTruthDisparity, // sensor_msgs/msg/Image 16UC1: true disparity of the left image, px * 128, 0 = no surface
   kCount
 };
 

@@ -29,10 +29,13 @@ TruthSample toTruth(const GroundTruthSample& g, const Eigen::Vector3d& scene_to_
   return t;
 }
 
-// Renders the pair of a camera tick into one reused frame and records it.
+// Renders the pair of a camera tick into one reused frame and records it, followed by its ground truth
+// (poses in the recorded odometry frame, visible markers, depth and disparity maps of the left image).
 struct FrameRecorder {
   StereoRenderer renderer;
   StereoFrame frame;
+  RenderTruth render_truth;
+  FrameTruth truth;
   bool enabled = false;
 
   bool init(const Scenario& scenario, std::uint64_t seed, const BoardConfig& board, bool render, std::string* error) {
@@ -42,19 +45,35 @@ struct FrameRecorder {
       if (error) *error = "sim: cannot allocate the stereo frame";
       return false;
     }
-    return renderer.init(scenario, seed, board.camera.channels, error);
+    if (!renderer.init(scenario, seed, board.camera.channels, error)) return false;
+    renderer.allocateTruth(&render_truth);
+    truth.depth_m = render_truth.depth_m;  // shares the pixels: the renderer fills them
+    truth.disparity_px = render_truth.disparity_px;
+    return true;
   }
-  void record(const CameraTick& tick, RecordingWriter* writer, DiveRecordSummary* summary) {
-    if (!enabled || !renderer.render(tick, &frame, nullptr)) return;
+  void record(const CameraTick& tick, const SensorSimulator& sim, const Eigen::Vector3d& scene_to_odom_m,
+              RecordingWriter* writer, DiveRecordSummary* summary) {
+    if (!enabled || !renderer.render(tick, &frame, &render_truth)) return;
     frame.exposure_us = 4000;
     writer->recordFrame(frame, -1);
+    const KinematicState robot = sim.truthAt(tick.t_us);
+    truth.t_us = tick.t_us;
+    truth.sequence = frame.sequence;
+    truth.p_robot_in_odom_m = robot.p_robot_in_odom_m - scene_to_odom_m;
+    truth.q_odom_robot = robot.q_odom_robot;
+    truth.p_left_cam_in_odom_m = tick.p_left_cam_in_odom_m - scene_to_odom_m;
+    truth.q_odom_left_cam = tick.q_odom_left_cam;
+    truth.p_right_cam_in_odom_m = tick.p_right_cam_in_odom_m - scene_to_odom_m;
+    truth.q_odom_right_cam = tick.q_odom_right_cam;
+    truth.visible_marker_ids = render_truth.visible_marker_ids;
+    writer->recordFrameTruth(truth);
     ++summary->frames;
   }
 };
 
 // Sensor samples become loop inputs; camera ticks become rendered stereo pairs.
-void recordEvent(const SimEvent& e, const Eigen::Vector3d& scene_to_odom_m, FrameRecorder* frames,
-                 RecordingWriter* writer, DiveRecordSummary* summary) {
+void recordEvent(const SimEvent& e, const SensorSimulator& sim, const Eigen::Vector3d& scene_to_odom_m,
+                 FrameRecorder* frames, RecordingWriter* writer, DiveRecordSummary* summary) {
   switch (e.stream) {
     case SimStream::kGroundTruth:
       writer->recordTruth(toTruth(std::get<GroundTruthSample>(e.sample), scene_to_odom_m));
@@ -66,7 +85,7 @@ void recordEvent(const SimEvent& e, const Eigen::Vector3d& scene_to_odom_m, Fram
     case SimStream::kDepth: writer->recordInput(std::get<DepthSample>(e.sample)); break;
     case SimStream::kCamera:
       ++summary->camera_ticks;
-      frames->record(std::get<CameraTick>(e.sample), writer, summary);
+      frames->record(std::get<CameraTick>(e.sample), sim, scene_to_odom_m, writer, summary);
       break;
     case SimStream::kCount: break;
   }
@@ -85,14 +104,16 @@ bool recordDive(const DiveRecordOptions& o, DiveRecordSummary* summary, std::str
   auto frames = std::make_unique<FrameRecorder>();
   if (!frames->init(scenario, o.seed, setup.config, o.render, error)) return false;
   RecordingWriter writer;
-  if (!writer.open(o.out_path, recordingOptions(setup.config), error)) return false;
+  RecordingOptions recording = recordingOptions(setup.config);
+  recording.truth_maps = frames->enabled;
+  if (!writer.open(o.out_path, recording, error)) return false;
   for (const auto& [name, values] : recordingMetadata(setup)) writer.recordMetadata(name, values);
   writer.recordMetadata("deepnav.sim", {{"scenario", o.scenario_path}, {"seed", std::to_string(o.seed)}});
   const Eigen::Vector3d scene_to_odom_m = sceneToOdomOffset(sim);
   SimEvent e;
   TimeUs next_report_us = 0;
   while (sim.next(&e)) {
-    recordEvent(e, scene_to_odom_m, frames.get(), &writer, summary);
+    recordEvent(e, sim, scene_to_odom_m, frames.get(), &writer, summary);
     summary->duration_s = usToS(e.t_us);
     if (o.progress && e.t_us >= next_report_us) {
       std::fprintf(stderr, "sim: %5.1f / %.0f s simulated\n", usToS(e.t_us), scenario.duration_s);
