@@ -13,6 +13,7 @@
 #include "tools/sim/render/view_tick.h"
 #include "tools/sim/scenario_loader.h"
 #include "vision/calib/stereo_rectification.h"
+#include "vision/markers/marker_detector.h"
 #include "vision/stereo/elas_disparity.h"
 
 namespace deepnav {
@@ -76,10 +77,14 @@ class CalibratePortBias : public ::testing::Test {
     ASSERT_TRUE(rectifier_.init(pinax_, &error)) << error;
   }
 
-  // Renders the views the left camera has `distance_m` in front of the grasping face.
+  // Renders the views of a tick (default: the left camera `distance_m` in front of the grasping face).
   void renderViews(double distance_m, StereoFrame* plain, sim::RenderTruth* plain_truth, StereoFrame* port,
                    cv::Mat* port_depth_m) {
-    const CameraTick tick = sim::tickFacingFace(scenario_, 1, distance_m, 0.1, 1.0, 0.0, 5.0);
+    renderTick(sim::tickFacingFace(scenario_, 1, distance_m, 0.1, 1.0, 0.0, 5.0), plain, plain_truth, port,
+               port_depth_m);
+  }
+  void renderTick(const CameraTick& tick, StereoFrame* plain, sim::RenderTruth* plain_truth, StereoFrame* port,
+                  cv::Mat* port_depth_m) {
     allocateStereoFrame(*plain, camera_.width_px, camera_.height_px, 1);
     plain_renderer_.allocateTruth(plain_truth);
     ASSERT_TRUE(plain_renderer_.render(tick, plain, plain_truth));
@@ -131,6 +136,31 @@ class CalibratePortBias : public ::testing::Test {
       }
   }
 
+  // Marker positions (camera frame) found in an image by a detector with the given intrinsics, mapped by
+  // to_camera into the real left camera frame; compared with the truth of the tick.
+  template <typename ToCamera>
+  void markerErrors(const cv::Mat& image, const PinholeIntrinsics& k, const CameraTick& tick, ToCamera to_camera,
+                    std::vector<double>* range_errors_m, std::vector<double>* position_errors_m) {
+    MarkerDetectorConfig config;
+    config.camera = k;
+    config.marker_size_m = plain_renderer_.panel().marker_size_m;
+    MarkerDetector detector;
+    std::string error;
+    ASSERT_TRUE(detector.init(config, &error)) << error;
+    MarkerObservations found;
+    ASSERT_TRUE(detector.detect(image, &found));
+    const sim::ViewPose view = plain_renderer_.leftView(tick);
+    for (int i = 0; i < found.count; ++i) {
+      const PanelMarker* m = plain_renderer_.panel().marker(found.items[i].id);
+      ASSERT_NE(m, nullptr);
+      const Eigen::Vector3d truth = view.R_panel_cam.cast<double>().transpose() *
+                                    (m->p_marker_in_panel_m - view.p_cam_in_panel_m.cast<double>());
+      const Eigen::Vector3d estimate = to_camera(found.items[i].p_marker_in_cam_m);
+      range_errors_m->push_back(estimate.norm() - truth.norm());
+      position_errors_m->push_back((estimate - truth).norm());
+    }
+  }
+
   sim::Scenario scenario_;
   sim::CameraConfig camera_;
   sim::FlatPortResampler resampler_;
@@ -167,6 +197,42 @@ TEST_F(CalibratePortBias, PinaxRemovesTheFlatPortDepthBias) {
     EXPECT_LT(std::abs(corrected.medianRelative() - reference.medianRelative()), 0.01);
   }
   std::printf("(median signed error, median relative error, and in brackets the median |relative error| in %%)\n");
+}
+
+TEST_F(CalibratePortBias, PinaxRemovesTheFlatPortMarkerRangeBias) {
+  std::printf("marker positions (valves face, 4 markers per view), mean range error / mean position error\n");
+  std::printf("%10s | %20s | %20s | %20s\n", "distance", "no port", "port, uncorrected", "port, PinAx");
+  const PinholeIntrinsics raw{camera_.fx_px, camera_.fy_px, camera_.cx_px, camera_.cy_px};
+  for (double distance_m : {1.8, 2.2, 2.6}) {
+    const CameraTick tick = sim::tickFacingFace(scenario_, 0, distance_m, 0.0, 1.25);
+    StereoFrame plain, port;
+    sim::RenderTruth plain_truth;
+    cv::Mat port_depth;
+    renderTick(tick, &plain, &plain_truth, &port, &port_depth);
+    cv::Mat left(port.left.size(), port.left.type()), right(port.right.size(), port.right.type());
+    ASSERT_TRUE(rectifier_.rectify(port.left, port.right, left, right));
+    std::vector<double> range[3], position[3];
+    const auto same = [](const Eigen::Vector3d& p) { return p; };
+    markerErrors(plain.left, raw, tick, same, &range[0], &position[0]);
+    markerErrors(port.left, raw, tick, same, &range[1], &position[1]);
+    const cv::Matx33d R_cam_rect = pinax_.R_rect_left.t();
+    const double z_v = pinax_.virtual_centre_z_m;
+    markerErrors(left, pinax_.rectified, tick, [&](const Eigen::Vector3d& p) {
+      const cv::Vec3d c = R_cam_rect * cv::Vec3d(p.x(), p.y(), p.z());
+      return Eigen::Vector3d(c[0], c[1], c[2] + z_v);
+    }, &range[2], &position[2]);
+    auto mean = [](const std::vector<double>& v) {
+      double s = 0.0;
+      for (double x : v) s += x;
+      return v.empty() ? NAN : s / static_cast<double>(v.size());
+    };
+    std::printf("%8.1f m | %+7.3f m / %5.3f m | %+7.3f m / %5.3f m | %+7.3f m / %5.3f m\n", distance_m, mean(range[0]),
+                mean(position[0]), mean(range[1]), mean(position[1]), mean(range[2]), mean(position[2]));
+    for (int k = 0; k < 3; ++k) ASSERT_GE(range[k].size(), 2u) << "variant " << k;
+    EXPECT_LT(mean(range[1]), -0.15 * distance_m);        // uncorrected: markers look ~n_water times nearer
+    EXPECT_LT(std::abs(mean(range[2])), 0.01 * distance_m);  // PinAx: within 1 % of the range
+    EXPECT_LT(mean(position[2]), std::max(0.015 * distance_m, mean(position[0]) + 0.01));  // as without a port
+  }
 }
 
 }  // namespace
