@@ -55,11 +55,12 @@ class CalibratePortBias : public ::testing::Test {
                                   &error))
         << error;
     camera_ = scenario_.camera;
-    ASSERT_TRUE(resampler_.init(camera_, testPort(), &error)) << error;
-    sim::Scenario pinhole_scenario = scenario_;
-    pinhole_scenario.camera = resampler_.pinhole();
+    // The same scenario with camera.port: {model: flat, ...}: the renderer draws raw port images.
+    sim::Scenario port_scenario = scenario_;
+    port_scenario.camera.flat_port = true;
+    port_scenario.camera.port = testPort();
     ASSERT_TRUE(plain_renderer_.init(scenario_, 1, 1, &error)) << error;
-    ASSERT_TRUE(port_renderer_.init(pinhole_scenario, 1, 1, &error)) << error;
+    ASSERT_TRUE(port_renderer_.init(port_scenario, 1, 1, &error)) << error;
     ElasParams params = ElasParams::dense();
     params.num_disparities = 256;
     ASSERT_TRUE(elas_.init(params, camera_.width_px, camera_.height_px));
@@ -88,22 +89,20 @@ class CalibratePortBias : public ::testing::Test {
     allocateStereoFrame(*plain, camera_.width_px, camera_.height_px, 1);
     plain_renderer_.allocateTruth(plain_truth);
     ASSERT_TRUE(plain_renderer_.render(tick, plain, plain_truth));
-    StereoFrame pinhole;
-    allocateStereoFrame(pinhole, camera_.width_px, camera_.height_px, 1);
     sim::RenderTruth truth;
     port_renderer_.allocateTruth(&truth);
-    ASSERT_TRUE(port_renderer_.render(tick, &pinhole, &truth));
     allocateStereoFrame(*port, camera_.width_px, camera_.height_px, 1);
-    port_depth_m->create(camera_.height_px, camera_.width_px, CV_32F);
-    cv::Mat right_depth(camera_.height_px, camera_.width_px, CV_32F);
-    ASSERT_TRUE(resampler_.resample(pinhole.left, truth.depth_m, port->left, *port_depth_m));
-    ASSERT_TRUE(resampler_.resample(pinhole.right, truth.right_depth_m, port->right, right_depth));
+    ASSERT_TRUE(port_renderer_.render(tick, port, &truth));
+    EXPECT_FALSE(port->rectified);
+    *port_depth_m = truth.depth_m;
   }
 
   // Depth of every pixel with a disparity, against the truth, for a pinhole pair of focal f and baseline b.
   void pinholeErrors(const cv::Mat& left, const cv::Mat& right, const cv::Mat& truth_m, DepthErrors* e) {
     cv::Mat disparity;
     ASSERT_TRUE(elas_.compute(left, right, &disparity));
+    // At 2.5 m and beyond the moderate water leaves ELAS too few support points to be a fair measure.
+    EXPECT_GT(elas_.supportPointCount(), 50);
     const double fb = camera_.fx_px * camera_.baseline_m;
     for (int v = 0; v < disparity.rows; ++v)
       for (int u = 0; u < disparity.cols; ++u) {
@@ -119,6 +118,7 @@ class CalibratePortBias : public ::testing::Test {
     ASSERT_TRUE(rectifier_.rectify(port.left, port.right, left, right));
     cv::Mat disparity;
     ASSERT_TRUE(elas_.compute(left, right, &disparity));
+    EXPECT_GT(elas_.supportPointCount(), 50);
     const PinholeIntrinsics& k = pinax_.rectified;
     const cv::Matx33d R_cam_rect = pinax_.R_rect_left.t();
     for (int v = 0; v < disparity.rows; ++v)
@@ -163,7 +163,6 @@ class CalibratePortBias : public ::testing::Test {
 
   sim::Scenario scenario_;
   sim::CameraConfig camera_;
-  sim::FlatPortResampler resampler_;
   sim::StereoRenderer plain_renderer_;
   sim::StereoRenderer port_renderer_;
   ElasDisparity elas_;
@@ -174,7 +173,7 @@ class CalibratePortBias : public ::testing::Test {
 TEST_F(CalibratePortBias, PinaxRemovesTheFlatPortDepthBias) {
   std::printf("flat port d1 = 12 mm acrylic, d0 = 8 mm; ELAS on 688x516 rendered pairs (default scenario water)\n");
   std::printf("%10s | %22s | %22s | %22s\n", "distance", "no port", "port, uncorrected", "port, PinAx");
-  for (double distance_m : {1.5, 2.0, 2.5}) {
+  for (double distance_m : {1.2, 1.6, 2.0}) {
     StereoFrame plain, port;
     sim::RenderTruth plain_truth;
     cv::Mat port_depth;

@@ -1,4 +1,7 @@
 #include "tools/sim/render/flat_port.h"
+#include "tools/sim/render/stereo_renderer.h"
+#include "tools/sim/render/view_tick.h"
+#include "tools/sim/scenario_loader.h"
 
 #include <cmath>
 
@@ -82,6 +85,38 @@ TEST(CalibSimFlatPortApi, SizeMismatchIsRefused) {
   port.n_glass = 0.2;
   EXPECT_FALSE(resampler.init(cam, port, &error));
   EXPECT_NE(error.find("n_glass"), std::string::npos) << error;
+}
+
+TEST(CalibSimFlatPortScenario, CameraPortKeysRenderRawPortImages) {
+  // GIVEN a scenario with camera.port: {model: flat, ...}
+  sim::Scenario scenario;
+  std::string error;
+  ASSERT_TRUE(sim::parseScenario("camera:\n  port:\n    model: flat\n    pinhole_to_glass_m: 0.008\n"
+                                 "    glass_thickness_m: 0.012\n    n_glass: 1.52\n",
+                                 "port.yaml", &scenario, &error))
+      << error;
+  EXPECT_TRUE(scenario.camera.flat_port);
+  EXPECT_EQ(scenario.camera.port.glass_thickness_m, 0.012);
+  EXPECT_EQ(scenario.camera.port.n_glass, 1.52);
+  EXPECT_EQ(scenario.camera.port.n_water, FlatPort{}.n_water);
+  // WHEN a pair is rendered facing the grasping face from 1.5 m
+  sim::StereoRenderer renderer;
+  ASSERT_TRUE(renderer.init(scenario, 1, 1, &error)) << error;
+  StereoFrame frame;
+  allocateStereoFrame(frame, scenario.camera.width_px, scenario.camera.height_px, 1);
+  sim::RenderTruth truth;
+  renderer.allocateTruth(&truth);
+  ASSERT_TRUE(renderer.render(sim::tickFacingFace(scenario, 1, 1.5, 0.0, 1.0), &frame, &truth));
+  // THEN the images are raw (not rectified), the depth at the centre is the face's, and the disparity
+  // truth is unknown (0) throughout
+  EXPECT_FALSE(frame.rectified);
+  EXPECT_NEAR(truth.depth_m.at<float>(258, 344), 1.5f, 0.05f);
+  EXPECT_EQ(cv::countNonZero(truth.disparity_px), 0);
+  // A bad port key is named.
+  EXPECT_FALSE(sim::parseScenario("camera:\n  port:\n    model: dome\n", "bad.yaml", &scenario, &error));
+  EXPECT_NE(error.find("camera.port.model"), std::string::npos) << error;
+  EXPECT_FALSE(sim::parseScenario("camera:\n  port:\n    glass_thikness_m: 0.01\n", "bad.yaml", &scenario, &error));
+  EXPECT_NE(error.find("glass_thikness_m"), std::string::npos) << error;
 }
 
 }  // namespace

@@ -128,6 +128,14 @@ void readCamera(YamlSection s, CameraConfig* c) {
   s.number("baseline_m", &c->baseline_m, 0.01, 5.0, "m");
   s.numbers("p_cam_in_robot_m", &c->p_cam_in_robot_m, -kMaxLever_m, kMaxLever_m, "m");
   s.numbers("mount_rpy_deg", &c->mount_rpy_deg, -kMaxAngle_deg, kMaxAngle_deg, "deg");
+  YamlSection port = s.section("port");
+  const int model = port.choice("model", {"none", "flat"});
+  if (model >= 0) c->flat_port = model == 1;
+  port.number("pinhole_to_glass_m", &c->port.pinhole_to_glass_m, 0.0, 0.5, "m");
+  port.number("glass_thickness_m", &c->port.glass_thickness_m, 0.0, 0.2, "m");
+  port.number("n_glass", &c->port.n_glass, 1.0, 3.0, "");
+  port.number("n_water", &c->port.n_water, 1.01, 2.0, "");
+  port.finish();
   s.finish();
 }
 

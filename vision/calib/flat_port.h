@@ -15,6 +15,8 @@ struct FlatPort {
   double n_air = 1.0;
   double n_glass = 1.49;            // acrylic; BK7 glass 1.52, sapphire 1.77
   double n_water = 1.34;            // sea water, visible light
+
+  bool operator==(const FlatPort&) const = default;
 };
 
 // False with a message naming the field when a parameter is non-physical (negative lengths, indices < 1,

@@ -38,8 +38,14 @@ bool StereoRenderer::init(const Scenario& scenario, const MarkerLayout& layout, 
   panel_ = makePanelDescription(scenario, layout);
   optics_ = waterOptics(scenario.water.preset);
   if (!scene_.init(scenario, panel_, layout.quiet_zone_m, seed, error)) return false;
-  if (!view_.init(scenario.camera, channels, optics_, &scene_, error)) return false;
   const int w = scenario.camera.width_px, h = scenario.camera.height_px;
+  has_port_ = scenario.camera.flat_port;
+  if (has_port_) {
+    if (!port_.init(scenario.camera, scenario.camera.port, error)) return false;
+    port_radiance_.create(h, w, CV_32FC(channels));
+    pinhole_depth_m_.create(h, w, CV_32F);
+  }
+  if (!view_.init(has_port_ ? port_.pinhole() : scenario.camera, channels, optics_, &scene_, error)) return false;
   if (!sensor_.init(w, h, channels, optics_, seed)) {
     if (error) *error = "renderer: camera sensor init failed";
     return false;
@@ -109,24 +115,35 @@ bool StereoRenderer::render(const CameraTick& tick, StereoFrame* frame, RenderTr
   const ViewPose left = leftView(tick), right = rightView(tick);
   const LampSet lamp_set = lamps(left);
   float* depth_left = truth ? truth->depth_m.ptr<float>() : depth_scratch_.data();
-  view_.render(left, lamp_set, radiance_.data(), depth_left);
+  view_.render(left, lamp_set, radiance_.data(), has_port_ ? pinhole_depth_m_.ptr<float>() : depth_left);
+  if (has_port_) throughPort(depth_left);
   const float gain = sensor_.autoExposureGain(radiance_.data());
   sensor_.expose(radiance_.data(), gain, frameKey(tick, 0), &frame->left);
   float* depth_right = truth ? truth->right_depth_m.ptr<float>() : depth_scratch_.data();
-  view_.render(right, lamp_set, radiance_.data(), depth_right);
+  view_.render(right, lamp_set, radiance_.data(), has_port_ ? pinhole_depth_m_.ptr<float>() : depth_right);
+  if (has_port_) throughPort(depth_right);
   sensor_.expose(radiance_.data(), gain, frameKey(tick, 1), &frame->right);
   frame->t_us = tick.t_us;
   frame->sequence = tick.frame_index;
-  frame->rectified = true;
+  frame->rectified = !has_port_;
   last_gain_ = gain;
   if (truth) {
     const float fb = static_cast<float>(scenario_.camera.fx_px * scenario_.camera.baseline_m);
     const std::size_t n = static_cast<std::size_t>(size.area());
     float* disparity = truth->disparity_px.ptr<float>();
-    for (std::size_t i = 0; i < n; ++i) disparity[i] = depth_left[i] > 0.0f ? fb / depth_left[i] : 0.0f;
+    // Raw flat-port images have no disparity of their own: 0 (unknown) throughout.
+    for (std::size_t i = 0; i < n; ++i) disparity[i] = depth_left[i] > 0.0f && !has_port_ ? fb / depth_left[i] : 0.0f;
     visibleMarkers(left, &truth->visible_marker_ids);
   }
   return true;
+}
+
+void StereoRenderer::throughPort(float* depth_m) {
+  const int w = scenario_.camera.width_px, h = scenario_.camera.height_px;
+  cv::Mat radiance(h, w, CV_32FC(channels_), radiance_.data());
+  cv::Mat depth(h, w, CV_32F, depth_m);
+  port_.resample(radiance, pinhole_depth_m_, port_radiance_, depth);
+  port_radiance_.copyTo(radiance);
 }
 
 void StereoRenderer::visibleMarkers(const ViewPose& left, std::vector<int>* ids) const {

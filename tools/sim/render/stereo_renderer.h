@@ -8,6 +8,7 @@
 #include "nav/markers/panel_description.h"
 #include "tools/sim/camera_tick.h"
 #include "tools/sim/render/camera_sensor.h"
+#include "tools/sim/render/flat_port.h"
 #include "tools/sim/render/marker_layout.h"
 #include "tools/sim/render/render_truth.h"
 #include "tools/sim/render/scene.h"
@@ -70,6 +71,14 @@ class StereoRenderer {
   std::vector<float> depth_scratch_;  // when the caller wants no truth
   float last_gain_ = 1.0f;
   bool initialised_ = false;
+  // camera.port flat: the view is rendered as a pinhole of focal x n_water, then resampled through the
+  // port (render/flat_port.h) before the sensor.
+  bool has_port_ = false;
+  FlatPortResampler port_;
+  cv::Mat port_radiance_;
+  cv::Mat pinhole_depth_m_;
+
+  void throughPort(float* depth_m);
 };
 
 }  // namespace deepnav::sim

@@ -8,6 +8,7 @@
 
 #include "tools/sim/camera_tick.h"
 #include "tools/sim/kinematic_state.h"
+#include "vision/calib/flat_port.h"
 
 namespace deepnav::sim {
 
@@ -26,6 +27,10 @@ struct CameraConfig {
   // Rotation of a forward-looking FLU "camera body" frame in the robot frame (R_robot_body); the optical
   // frame (z forward, x right, y down) is fixed to that body. Zero: optical axis along robot +x.
   std::array<double, 3> mount_rpy_deg{0.0, 0.0, 0.0};
+  // camera.port: a flat port in front of each camera (render/flat_port.h); off, the renderer draws a
+  // rectified pinhole pair. With it, fx..cy are the cameras' in-air intrinsics and the images are raw.
+  bool flat_port = false;
+  FlatPort port{};
 
   bool operator==(const CameraConfig&) const = default;
 };
