@@ -95,6 +95,7 @@ bool DeepnavService::init(const ServiceOptions& options, std::string* error) {
 }
 
 void DeepnavService::applyLoopThreadSettings(const char* thread) {
+  setThreadName((std::string("deepnav-") + thread).c_str());
   if (std::string(thread) != "nav") return;
   const BoardConfig::Realtime& r = setup_.config.realtime;
   std::string why;

@@ -2,6 +2,7 @@
 
 #include "board/service/health_monitor.h"
 #include "drivers/outputs/nav_datagram.h"
+#include "drivers/realtime/realtime.h"
 
 namespace deepnav {
 
@@ -53,6 +54,7 @@ NavOutput OutputPublisher::latest() const {
 }
 
 void OutputPublisher::run() {
+  setThreadName("deepnav-outputs");
   std::uint32_t seen = tick_seq_.load(std::memory_order_acquire);
   NavOutput out;
   std::uint8_t datagram[kNavDatagramSize];

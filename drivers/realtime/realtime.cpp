@@ -58,6 +58,12 @@ bool setThreadFifo(int priority, std::string* error) {
   return rc == 0;
 }
 
+void setThreadName(const char* name) {
+  char truncated[16] = {};
+  std::strncpy(truncated, name, sizeof truncated - 1);
+  ::pthread_setname_np(::pthread_self(), truncated);
+}
+
 bool lockAllMemory(std::string* error) {
   if (::mlockall(MCL_CURRENT | MCL_FUTURE) == 0) return true;
   const int e = errno;

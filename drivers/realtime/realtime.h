@@ -15,6 +15,8 @@ bool parseCpuList(const std::string& text, cpu_set_t* cpus, std::string* error);
 bool setThreadCpus(const cpu_set_t& cpus, std::string* error);
 // SCHED_FIFO at the given priority (1..99).
 bool setThreadFifo(int priority, std::string* error);
+// Names the calling thread (top -H, ps -L, gdb); at most 15 characters are kept.
+void setThreadName(const char* name);
 // mlockall(MCL_CURRENT | MCL_FUTURE): no page fault will ever stall the loop.
 bool lockAllMemory(std::string* error);
 

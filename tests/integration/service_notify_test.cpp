@@ -101,14 +101,12 @@ TEST(ServiceNotify, StalledLoopStopsTheWatchdogAndStatusSaysStalled) {
   service.requestStop();
   runner.join();
   EXPECT_TRUE(run_ok) << error;
-  // THEN pings came before, none during the stall (one may be in flight from the window before it),
-  // and they come back once the loop ticks again
+  // THEN pings came before; during the stall only the ping of the window the stall began in (and one
+  // queued just before it) arrive, none after the stall's first 0.2 s window; they resume after it
   EXPECT_GE(healthy.size(), 4u);
   const auto stalled_pings = watchdogTimes(during);
-  EXPECT_LE(stalled_pings.size(), 1u);
-  if (!stalled_pings.empty()) {
-    EXPECT_LT(stalled_pings.front() - stall_start_s, 0.25);
-  }
+  EXPECT_LE(stalled_pings.size(), 2u);
+  for (double t : stalled_pings) EXPECT_LT(t - stall_start_s, 0.3) << "a ping while the loop was stalled";
   EXPECT_GE(watchdogTimes(after).size(), 3u);
   bool status_stalled = false;
   for (const auto& m : during) status_stalled |= m.text.find("health stalled") != std::string::npos;

