@@ -10,6 +10,7 @@ packages=(
   libmodbus-dev libsystemd-dev libyaml-cpp-dev libcli11-dev libspdlog-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev libzstd-dev liblz4-dev
   libnanoflann-dev libceres-dev
+  clang-14 libclang-rt-14-dev
   python3 python3-numpy python3-matplotlib
 )
 # Node.js runs the independent MCAP reader in the tests; a machine that already has node

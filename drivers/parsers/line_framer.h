@@ -31,6 +31,7 @@ class LineFramer {
   size_t max_line_ = 0;
   bool restart_on_start_ = true;
   size_t pending_ = 0;
+  size_t scanned_ = 0;  // bytes of the current line (or noise run) already checked
 };
 
 }  // namespace deepnav

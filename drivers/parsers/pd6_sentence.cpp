@@ -86,6 +86,7 @@ bool parsePd6Line(std::string_view line, Pd6Record* out, const char** error) {
         if (c < '0' || c > '9') return *error = "PD6 TS time is not YYMMDDHHmmsshh", false;
       }
       out->time = f[1];
+      if (out->value[4] < 0 || out->value[4] > 999) return *error = "PD6 TS built-in test result out of range", false;
       out->bit = int(out->value[4]);  // values: salinity ppt, temperature degC, depth m, speed of sound m/s
       out->num_values = 4;
       break;

@@ -63,15 +63,17 @@ WlDecode parseWlDvlJson(std::string_view text, WlDvlReport* out, const char** er
       return invalid("JSON velocity report misses a field");
     }
     num(text, "time", &out->time_since_last_ms);
-    if (num(text, "time_of_validity", &tov)) out->time_of_validity_us = int64_t(tov);
-    if (num(text, "time_of_transmission", &tot)) out->time_of_transmission_us = int64_t(tot);
+    if (num(text, "time_of_validity", &tov) && !wlMicros(tov, &out->time_of_validity_us)) return invalid("JSON time_of_validity out of range");
+    if (num(text, "time_of_transmission", &tot) && !wlMicros(tot, &out->time_of_transmission_us)) {
+      return invalid("JSON time_of_transmission out of range");
+    }
     if (JsonScan::member(text, "covariance", &array)) {
       if (!covariance(array, out)) return invalid("JSON covariance is not a 3x3 array");
       out->has_covariance = true;
     }
     if (JsonScan::member(text, "transducers", &array) && !transducers(array, out)) return invalid("JSON transducers are malformed");
     out->kind = WlDvlReport::Kind::kVelocity;
-    out->status = int(status);
+    if (!wlStatusValue(status, &out->status)) return invalid("JSON status is not a small integer");
     return WlDecode::kDecoded;
   }
   if (type == "position_local") {
@@ -83,7 +85,7 @@ WlDecode parseWlDvlJson(std::string_view text, WlDvlReport* out, const char** er
     }
     out->kind = WlDvlReport::Kind::kDeadReckoning;
     out->roll_rad = roll * kDegToRad, out->pitch_rad = pitch * kDegToRad, out->yaw_rad = yaw * kDegToRad;
-    out->status = int(status);
+    if (!wlStatusValue(status, &out->status)) return invalid("JSON status is not a small integer");
     return WlDecode::kDecoded;
   }
   return WlDecode::kOtherSentence;

@@ -1,4 +1,5 @@
 #pragma once
+#include <cstdint>
 #include <string_view>
 
 #include "drivers/parsers/wl_dvl_report.h"
@@ -16,6 +17,11 @@ namespace deepnav {
 enum class WlDecode { kDecoded, kOtherSentence, kInvalid };
 
 WlDecode parseWlDvlSerialLine(std::string_view line, WlDvlReport* out, const char** error);
+
+// Range-checked conversions shared by both protocols: a status must be an integer in [0, 65535], a
+// time in microseconds in [0, 9.2e18]; false otherwise.
+bool wlStatusValue(double v, int* out);
+bool wlMicros(double v, int64_t* out);
 
 // The same for one TCP JSON v3 report ("type": "velocity" or "position_local").
 WlDecode parseWlDvlJson(std::string_view text, WlDvlReport* out, const char** error);

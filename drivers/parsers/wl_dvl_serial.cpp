@@ -36,6 +36,13 @@ bool numbers(const std::string_view* f, int n, double* out) {
   return true;
 }
 
+// Status words are small integers; anything else is a damaged field (and would overflow an int).
+bool statusValue(double v, int* out) {
+  if (v < 0 || v > 65535 || v != std::floor(v)) return false;
+  *out = int(v);
+  return true;
+}
+
 bool micros(std::string_view f, int64_t* out) {
   double v = 0;
   if (!nmeaDouble(f, &v) || v < 0 || v > 9.2e18) return false;
@@ -44,6 +51,14 @@ bool micros(std::string_view f, int64_t* out) {
 }
 
 }  // namespace
+
+bool wlStatusValue(double v, int* out) { return statusValue(v, out); }
+
+bool wlMicros(double v, int64_t* out) {
+  if (!(v >= 0 && v <= 9.2e18)) return false;
+  *out = int64_t(v);
+  return true;
+}
 
 WlDecode parseWlDvlSerialLine(std::string_view line, WlDvlReport* out, const char** error) {
   *out = WlDvlReport{};
@@ -78,7 +93,7 @@ WlDecode parseWlDvlSerialLine(std::string_view line, WlDvlReport* out, const cha
     out->altitude_m = v[3], out->fom_mps = v[4];
     out->has_covariance = true;
     out->time_since_last_ms = since_ms;
-    out->status = int(status);
+    if (!statusValue(status, &out->status)) return invalid("wrz status is not a small integer");
     return WlDecode::kDecoded;
   }
   if (type == "wrx") {
@@ -90,7 +105,7 @@ WlDecode parseWlDvlSerialLine(std::string_view line, WlDvlReport* out, const cha
     out->time_since_last_ms = v[0];
     out->vx_mps = v[1], out->vy_mps = v[2], out->vz_mps = v[3], out->fom_mps = v[4], out->altitude_m = v[5];
     out->velocity_valid = f[7] == "y";
-    out->status = int(v[6]);
+    if (!statusValue(v[6], &out->status)) return invalid("wrx status is not a small integer");
     return WlDecode::kDecoded;
   }
   if (type == "wru") {
@@ -106,7 +121,7 @@ WlDecode parseWlDvlSerialLine(std::string_view line, WlDvlReport* out, const cha
     out->kind = WlDvlReport::Kind::kDeadReckoning;
     out->ts_s = v[0], out->x_m = v[1], out->y_m = v[2], out->z_m = v[3], out->pos_std_m = v[4];
     out->roll_rad = v[5] * kDegToRad, out->pitch_rad = v[6] * kDegToRad, out->yaw_rad = v[7] * kDegToRad;
-    out->status = int(v[8]);
+    if (!statusValue(v[8], &out->status)) return invalid("wrp status is not a small integer");
     return WlDecode::kDecoded;
   }
   return WlDecode::kOtherSentence;

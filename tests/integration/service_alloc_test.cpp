@@ -1,0 +1,109 @@
+// The service's tick observer runs on the nav loop thread at every tick: it must not allocate. Every
+// allocation made on the test thread while it plays the loop thread is counted (operator new and, outside
+// sanitizer builds, malloc), with the Modbus server and the UDP sender live behind it.
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdlib>
+#include <new>
+#include <thread>
+
+#include <gtest/gtest.h>
+
+#include "board/config/vehicle_setup.h"
+#include "board/loop/live_loop.h"
+#include "board/service/output_publisher.h"
+
+namespace {
+thread_local bool t_counting = false;
+std::atomic<long> g_allocations{0};
+void noteAllocation() {
+  if (t_counting) g_allocations.fetch_add(1, std::memory_order_relaxed);
+}
+}  // namespace
+
+#if !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
+extern "C" void* __libc_malloc(size_t);
+extern "C" void* __libc_calloc(size_t, size_t);
+extern "C" void* __libc_realloc(void*, size_t);
+extern "C" void* malloc(size_t n) {
+  noteAllocation();
+  return __libc_malloc(n);
+}
+extern "C" void* calloc(size_t n, size_t m) {
+  noteAllocation();
+  return __libc_calloc(n, m);
+}
+extern "C" void* realloc(void* p, size_t n) {
+  noteAllocation();
+  return __libc_realloc(p, n);
+}
+#endif
+
+void* operator new(std::size_t n) {
+  noteAllocation();
+  if (void* p = std::malloc(n ? n : 1)) return p;
+  throw std::bad_alloc();
+}
+void* operator new[](std::size_t n) { return operator new(n); }
+void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
+  noteAllocation();
+  return std::malloc(n ? n : 1);
+}
+void* operator new[](std::size_t n, const std::nothrow_t& t) noexcept { return operator new(n, t); }
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete[](void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+
+namespace deepnav {
+namespace {
+
+TEST(ServiceAlloc, TickObserverAllocatesNothing) {
+  // GIVEN the sim board's loop (not started: this thread plays the loop thread) and live outputs
+  VehicleSetup setup;
+  std::string error;
+  ASSERT_TRUE(loadVehicleSetup(std::string(DEEPNAV_SOURCE_DIR) + "/board/sim/board.yaml", &setup, &error)) << error;
+  LiveLoop loop;
+  ASSERT_TRUE(loop.init(setup, "", &error)) << error;
+  const int udp = ::socket(AF_INET, SOCK_DGRAM, 0);
+  sockaddr_in a{};
+  a.sin_family = AF_INET;
+  a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+  ASSERT_EQ(::bind(udp, reinterpret_cast<sockaddr*>(&a), sizeof a), 0);
+  socklen_t len = sizeof a;
+  ::getsockname(udp, reinterpret_cast<sockaddr*>(&a), &len);
+  BoardConfig::Outputs outputs = setup.config.outputs;
+  outputs.modbus_enabled = true;
+  outputs.modbus_address = "127.0.0.1";
+  outputs.modbus_port = 0;  // any free port
+  outputs.udp_destinations = "127.0.0.1:" + std::to_string(ntohs(a.sin_port));
+  OutputPublisher publisher;
+  ASSERT_TRUE(publisher.start(outputs, &loop, &error)) << error;
+  NavSolution s;
+  InputCounters c;
+  publisher.onTick(s, c);  // warm-up
+  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  // WHEN 500 ticks are published at 1 kHz
+  t_counting = true;
+  for (int i = 0; i < 500; ++i) {
+    s.t_us += 10'000;
+    ++c.imu;
+    publisher.onTick(s, c);
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  t_counting = false;
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  publisher.stop();
+  ::close(udp);
+  // THEN nothing was allocated on the loop thread, and the outputs thread did its work
+  EXPECT_EQ(g_allocations.load(), 0);
+  EXPECT_EQ(publisher.latest().solution.t_us, s.t_us);
+  EXPECT_GT(publisher.datagramsSent(), 400u);
+}
+
+}  // namespace
+}  // namespace deepnav

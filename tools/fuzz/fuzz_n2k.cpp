@@ -1,0 +1,56 @@
+// libFuzzer harness: arbitrary bytes as candump text and as raw CAN frames, through the NMEA 2000
+// fast-packet assembler and the 127250/127251/127257 decoders.
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+#include "drivers/parsers/candump_line.h"
+#include "drivers/parsers/n2k_assembler.h"
+#include "drivers/parsers/n2k_heading_pgns.h"
+
+namespace {
+
+void decode(deepnav::N2kAssembler* a, const deepnav::CanFrame& f) {
+  using namespace deepnav;
+  N2kMessage m;
+  const char* why = "";
+  if (a->add(f, &m, &why) != N2kAssembler::Result::kMessage) return;
+  N2kVesselHeading h;
+  N2kRateOfTurn r;
+  N2kAttitude att;
+  HeadingSample hs;
+  AttitudeSample as;
+  if (decodeN2kVesselHeading(m, &h, &why)) headingSampleFromN2k(h, 0, &hs);
+  decodeN2kRateOfTurn(m, &r, &why);
+  if (decodeN2kAttitude(m, &att, &why)) attitudeSampleFromN2k(att, 0, &as);
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  using namespace deepnav;
+  N2kAssembler text_assembler, raw_assembler;
+  const uint32_t pgns[] = {127250, 127251, 127257, 129029};
+  raw_assembler.setFastPacketPgns(pgns, 4);  // the heading PGNs also as fast packet
+  std::string_view text(reinterpret_cast<const char*>(data), size);
+  while (!text.empty()) {
+    const size_t nl = text.find('\n');
+    CanFrame f;
+    double t = 0;
+    const char* why = "";
+    if (parseCandumpLine(text.substr(0, nl), &f, &t, &why) == CandumpLine::kFrame) decode(&text_assembler, f);
+    if (nl == std::string_view::npos) break;
+    text.remove_prefix(nl + 1);
+  }
+  // Raw frames: 4-byte identifier, 1 length byte, 8 data bytes.
+  for (size_t i = 0; i + 13 <= size; i += 13) {
+    CanFrame f;
+    f.id = (uint32_t(data[i]) << 24 | uint32_t(data[i + 1]) << 16 | uint32_t(data[i + 2]) << 8 | data[i + 3]) & 0x1FFFFFFF;
+    f.extended = true;
+    f.dlc = data[i + 4] % 9;
+    std::copy(data + i + 5, data + i + 13, f.data.begin());
+    decode(&raw_assembler, f);
+  }
+  return 0;
+}
