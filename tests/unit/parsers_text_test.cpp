@@ -169,6 +169,8 @@ TEST(Pd6Parser, EnsembleBecomesDvlSample) {
   EXPECT_FALSE(parsePd6Line(":BI,+100,-500,+20,A", &r, &why));  // missing error velocity
   EXPECT_FALSE(parsePd6Line(":BI,+100,-500,+20,5,X", &r, &why));
   EXPECT_FALSE(parsePd6Line(":XX,1", &r, &why));
+  // Found by fuzzing: a built-in-test value that does not fit an int is a bad line, not undefined behaviour.
+  EXPECT_FALSE(parsePd6Line(":TS,21051012345612,35.0,+12.5,12.0,1500.0,33333333345", &r, &why));
   ASSERT_TRUE(parsePd6Line(":BI,-32768,-32768,-32768,-32768,V", &r, &why));
   EXPECT_FALSE(r.value_valid[0]);
 }
@@ -211,6 +213,9 @@ TEST(WaterLinkedParser, SerialVelocityTransducerAndDeadReckoning) {
   line.resize(line.size() - 2);
   EXPECT_EQ(parseWlDvlSerialLine(line, &r, &why), WlDecode::kOtherSentence);
   EXPECT_EQ(parseWlDvlSerialLine("wrz,0.1,0.1*00", &r, &why), WlDecode::kInvalid);
+  line = test::wlSentence("wrp,49056.809,12.43,64.23,1.34,0.4,20.42,-1.24,34.11,3e10");  // status overflows an int
+  line.resize(line.size() - 2);
+  EXPECT_EQ(parseWlDvlSerialLine(line, &r, &why), WlDecode::kInvalid);
 }
 
 TEST(WaterLinkedParser, JsonVelocityAndPositionReports) {
