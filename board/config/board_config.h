@@ -97,9 +97,7 @@ struct BoardConfig {
   } vision;
   struct Sources {                // where `deepnav run` takes its inputs (board/service/README.md)
     std::string replay_path;      // recording played as the sensors, relative to the board file
-    std::string camera_left;      // devices, checked by the board validation; empty: not fitted
-    std::string camera_right;
-    std::string dvl_serial;
+    std::string dvl_serial;       // devices, checked by the board validation; empty: not fitted
     std::string ahrs_serial;
     std::string depth_serial;
     std::string can_interface;

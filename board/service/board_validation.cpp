@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "drivers/camera/gvcp_probe.h"
 #include "drivers/outputs/udp_sender.h"
 #include "drivers/probe/device_probe.h"
 #include "drivers/realtime/realtime.h"
@@ -19,7 +20,7 @@ struct Device {
   const char* key;
   const char* what;
   const std::string* value;
-  enum Kind { kSerial, kCan, kGige } kind;
+  enum Kind { kSerial, kCan } kind;
 };
 
 class Checker {
@@ -40,26 +41,49 @@ std::string makeRecordingHint() {
          "and set sources.replay_path to it (or pass --replay dive.mcap)";
 }
 
-bool checkDevices(const BoardConfig::Sources& s, Checker& check, bool* any) {
+bool checkCameras(const CameraSourceConfig& c, Checker& check, bool* any) {
+  if (c.driver == "none") return true;
+  *any = true;
+  const struct {
+    const char* key;
+    const char* what;
+    const std::string* id;
+  } cameras[] = {{"camera.left", "left camera", &c.left}, {"camera.right", "right camera", &c.right}};
+  for (const auto& cam : cameras) {
+    const std::string& id = *cam.id;
+    if (id.empty()) return check.fail(cam.key, std::string("is empty but camera.driver is ") + c.driver);
+    std::string reason;
+    in_addr ip{};
+    if (c.driver == "v4l2" && !probeVideoDevice(id, &reason)) {
+      return check.fail(cam.key, std::string(cam.what) + " " + id + " is not reachable: " + reason);
+    }
+    // Aravis cameras named by IPv4 address are probed by a GVCP discovery; a device id, serial number
+    // or user id is resolved by the driver when it opens the camera.
+    if (c.driver == "aravis" && ::inet_pton(AF_INET, id.c_str(), &ip) == 1 &&
+        !gvcpDeviceAnswers(id, kCameraProbeTimeoutMs)) {
+      return check.fail(cam.key, std::string(cam.what) + " " + id +
+                                     " is not reachable: no GigE Vision device answers a GVCP discovery within " +
+                                     std::to_string(kCameraProbeTimeoutMs) + " ms");
+    }
+  }
+  return true;
+}
+
+bool checkDevices(const BoardConfig& c, Checker& check, bool* any) {
+  *any = false;
+  if (!checkCameras(c.camera.source, check, any)) return false;
+  const BoardConfig::Sources& s = c.sources;
   const Device devices[] = {
-      {"sources.camera_left", "left camera", &s.camera_left, Device::kGige},
-      {"sources.camera_right", "right camera", &s.camera_right, Device::kGige},
       {"sources.dvl_serial", "DVL serial port", &s.dvl_serial, Device::kSerial},
       {"sources.ahrs_serial", "AHRS serial port", &s.ahrs_serial, Device::kSerial},
       {"sources.depth_serial", "depth sensor serial port", &s.depth_serial, Device::kSerial},
       {"sources.can_interface", "CAN interface", &s.can_interface, Device::kCan},
   };
-  *any = false;
   for (const Device& d : devices) {
     if (d.value->empty()) continue;
     *any = true;
     std::string reason;
-    bool ok = false;
-    switch (d.kind) {
-      case Device::kSerial: ok = probeSerialPort(*d.value, &reason); break;
-      case Device::kCan: ok = probeCanInterface(*d.value, &reason); break;
-      case Device::kGige: ok = probeGigeCamera(*d.value, kCameraProbeTimeoutMs, &reason); break;
-    }
+    const bool ok = d.kind == Device::kSerial ? probeSerialPort(*d.value, &reason) : probeCanInterface(*d.value, &reason);
     if (!ok) return check.fail(d.key, std::string(d.what) + " " + *d.value + " is not reachable: " + reason);
   }
   return true;
@@ -128,14 +152,14 @@ bool validateBoard(const VehicleSetup& setup, const std::string& board_path, con
   Checker check(board_path, error);
   const BoardConfig& c = setup.config;
   if (!checkCalibration(c.camera, check)) return false;
-  if (!checkDevices(c.sources, check, &out->has_devices)) return false;
+  if (!checkDevices(c, check, &out->has_devices)) return false;
   const std::string key = replay_override.empty() ? "sources.replay_path" : "--replay";
   std::string replay = replay_override;
   if (replay.empty() && !c.sources.replay_path.empty()) {
     replay = (std::filesystem::path(board_path).parent_path() / c.sources.replay_path).lexically_normal().string();
   }
   if (!replay.empty() && out->has_devices) {
-    return check.fail(key, "a replay and the board's devices (sources.camera_*, *_serial, can_interface) are "
+    return check.fail(key, "a replay and the board's devices (camera.driver, sources.*_serial, sources.can_interface) are "
                            "exclusive: list devices for a vehicle, a recording for a bench or simulator rig");
   }
   if (replay.empty() && !out->has_devices) {

@@ -68,9 +68,9 @@ bool DeepnavService::init(const ServiceOptions& options, std::string* error) {
   if (!loadVehicleSetup(options.board_path, &setup_, error)) return false;
   if (!validateBoard(setup_, options.board_path, options.replay_path, &board_, error)) return false;
   if (board_.has_devices) {
-    // The live drivers (Aravis, SocketCAN, serial, Modbus RTU) are the drivers issue's; until they are
-    // wired here a device board validates but cannot run.
-    if (error) *error = options.board_path + ": sources: the devices answer, but this build has no live drivers yet";
+    // The live drivers (drivers/camera, can, serial, modbus) are not wired into the service yet: a
+    // device board validates but cannot run.
+    if (error) *error = options.board_path + ": sources: the devices answer, but the service does not run live drivers yet";
     return false;
   }
   const BoardConfig& c = setup_.config;

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "drivers/camera/gvcp_probe.h"
 #include "tests/support/service_fixture.h"
 #include "tests/support/test_dive.h"
 
@@ -33,8 +34,8 @@ TEST(ServiceValidation, ExampleVehicleFailsNamingItsFirstMissingDevice) {
     if (validate_only) args.push_back("--validate");
     const Outcome o = runDeepnav(args);
     EXPECT_EQ(o.code, 2) << o.err;
-    EXPECT_TRUE(has(o.err, "board/example-vehicle/board.yaml: sources.camera_left: left camera 192.168.10.11 "
-                           "is not reachable")) << o.err;
+    EXPECT_TRUE(has(o.err, "board/example-vehicle/board.yaml: camera.left: left camera 192.168.10.11 is not "
+                           "reachable")) << o.err;
     EXPECT_EQ(std::count(o.err.begin(), o.err.end(), '\n'), 1) << "one message: " << o.err;
   }
 }
@@ -99,8 +100,11 @@ TEST(ServiceValidation, ReachableDevicesPass) {
     char arg0[] = "arv-fake-gv-camera-0.8", arg1[] = "-i", arg2[] = "127.0.0.1";
     char* argv[] = {arg0, arg1, arg2, nullptr};
     ASSERT_EQ(posix_spawn(&camera, "/usr/bin/arv-fake-gv-camera-0.8", nullptr, nullptr, argv, environ), 0);
-    ::usleep(500000);  // let it bind its GVCP port
-    settings["sources.camera_left"] = "127.0.0.1";
+    for (int i = 0; i < 100 && !gvcpDeviceAnswers("127.0.0.1", 50); ++i) {
+    }  // until it serves GVCP (at most 5 s)
+    settings["camera.driver"] = "aravis";
+    settings["camera.left"] = "127.0.0.1";
+    settings["camera.right"] = "127.0.0.1";
   }
   const std::string board = testing::makeServiceBoard("devices_board", "", settings);
   // WHEN the board is validated
@@ -112,10 +116,10 @@ TEST(ServiceValidation, ReachableDevicesPass) {
   }
   ::close(master);
   ::close(slave);
-  // THEN it is valid; and a real run refuses it, since this build has no live drivers for them yet
+  // THEN it is valid; and a real run refuses it, since the service does not run live drivers yet
   EXPECT_EQ(o.code, 0) << o.err;
   EXPECT_EQ(r.code, 2);
-  EXPECT_TRUE(has(r.err, "sources: the devices answer, but this build has no live drivers yet")) << r.err;
+  EXPECT_TRUE(has(r.err, "sources: the devices answer, but the service does not run live drivers yet")) << r.err;
   if (camera <= 0) GTEST_SKIP() << "arv-fake-gv-camera-0.8 not installed: the GigE probe was not exercised";
 }
 
