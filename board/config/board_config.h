@@ -118,6 +118,35 @@ struct BoardConfig {
     std::string process_cpus;     // CPU list of every other thread; empty: any
     bool mlockall;                // lock all memory (no page faults in the loop)
   } realtime;
+  struct SerialSensors {         // serial DVL and AHRS drivers (drivers/serial, drivers/parsers/README.md)
+    std::string dvl_protocol;     // pd0 | pd6 | wl-a50
+    int dvl_baud;
+    std::string ahrs_protocol;    // xsens | nmea0183
+    int ahrs_baud;
+    double reopen_interval_s;     // a vanished port is reopened this often
+  } serial;
+  struct CanSensors {             // CAN compass/attitude/IMU driver (drivers/can)
+    int heading_source;           // NMEA 2000 source address of PGN 127250; -1: any
+    int attitude_source;          // of PGN 127257; -1: any
+    std::string imu_mapping;      // CanFieldMapping spec for a non-NMEA-2000 sensor; empty: none
+    double bus_off_recovery_s;    // restart the controller after this long in bus-off
+  } can;
+  struct ModbusDepth {            // Modbus RTU depth sensor (drivers/modbus), on sources.depth_serial
+    int baud;
+    std::string parity;           // N | E | O
+    int stop_bits;
+    int slave_id;
+    std::string register_kind;    // input | holding
+    int register_address;
+    std::string value_type;       // u16 | i16 | u32 | i32 | f32
+    bool high_word_first;
+    double scale_pa;              // pascals per count
+    double offset_pa;
+    double atmospheric_pa;
+    double water_density_kgpm3;
+    double rate_hz;
+    int timeout_ms;
+  } modbus_depth;
   EkfConfig ekf;  // navigation filter: mounting, noise, gates, timeouts, delayed-fusion window
 };
 
