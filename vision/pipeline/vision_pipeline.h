@@ -55,6 +55,7 @@ class VisionPipeline {
   WorkspaceModel& workspace() { return workspace_; }
   const WorkspaceModel& workspace() const { return workspace_; }
   const StereoCloud& dense() const { return dense_; }
+  StereoCloud& dense() { return dense_; }  // tools: one pair through the dense chain
   const OrganizedCloud& lastCloud() const { return cloud_; }
   const PlaneOdometry& planeOdometry() const { return plane_vo_; }
 
