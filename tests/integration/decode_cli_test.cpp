@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
@@ -25,7 +27,9 @@ struct DecodeRun {
 
 DecodeRun decode(const std::string& format, const std::string& file) {
   const std::string dir = ::testing::TempDir();
-  const std::string out = dir + "decode_out.jsonl", err = dir + "decode_err.txt";
+  // ctest runs each test case in its own process, in parallel: names carry the process id and format.
+  const std::string tag = std::to_string(::getpid()) + "_" + format;
+  const std::string out = dir + "decode_out_" + tag + ".jsonl", err = dir + "decode_err_" + tag + ".txt";
   const std::string cmd = std::string(DEEPNAV_BIN_DIR) + "/deepnav decode " + format + " " + file + " > " + out + " 2> " + err;
   DecodeRun r;
   r.status = std::system(cmd.c_str());
@@ -43,7 +47,7 @@ std::filesystem::path shared() {
 }
 
 std::string writeTemp(const std::string& name, const std::string& bytes) {
-  const std::string path = ::testing::TempDir() + name;
+  const std::string path = ::testing::TempDir() + std::to_string(::getpid()) + "_" + name;
   std::ofstream(path, std::ios::binary) << bytes;
   return path;
 }
