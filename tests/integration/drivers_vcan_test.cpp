@@ -1,7 +1,7 @@
 // The CAN driver against a real kernel CAN interface (vcan0). This machine's kernel has no vcan: the
-// test skips here and runs in the QEMU VM (tools/qemu) where vcan0 exists. Frames are written by a
-// second raw socket on the same interface, so the kernel's filters, error-frame option and loopback
-// are all exercised.
+// test skips here and runs in the QEMU VM of tools/vm/run-kernel-tests.sh, where vcan0 exists. Frames
+// are written by a second raw socket on the same interface, so the kernel's filters, the error-frame
+// option and the loopback are all exercised.
 #include <net/if.h>
 
 #include <chrono>
@@ -26,7 +26,7 @@ struct Collect : SampleSink {
 const char* kInterface = "vcan0";
 
 TEST(Vcan, FiltersPassHeadingAndAttitudeOnly) {
-  if (::if_nametoindex(kInterface) == 0) GTEST_SKIP() << "no vcan0 on this kernel (run tools/qemu/run-can-v4l2-tests.sh)";
+  if (::if_nametoindex(kInterface) == 0) GTEST_SKIP() << "no vcan0 on this kernel (run tools/vm/run-kernel-tests.sh)";
   CanSensorDriver driver;
   std::string error;
   CanSensorConfig config;
