@@ -15,7 +15,19 @@ packages=(
   libaravis-dev libusb-1.0-0-dev libmodbus-dev libyaml-cpp-dev libcli11-dev libspdlog-dev libfmt-dev
   libgtest-dev libgmock-dev libzstd-dev liblz4-dev libnanoflann-dev libceres-dev
 )
+# Without maintainer scripts, update-alternatives never ran: make the links it would have made for the
+# reference BLAS and LAPACK (libopencv_core needs libblas.so.3 and liblapack.so.3).
+alternatives() {
+  local lib="$1/usr/lib/aarch64-linux-gnu"
+  for name in blas lapack; do
+    for so in "lib$name.so.3" "lib$name.so"; do
+      if [ ! -e "$lib/$so" ] && [ -e "$lib/$name/$so" ]; then ln -s "$name/$so" "$lib/$so"; fi
+    done
+  done
+}
+
 if [ -f "$sysroot/.deepnav-sysroot" ]; then
+  alternatives "$sysroot"
   echo "make-sysroot: $sysroot exists (remove it to rebuild)"
   exit 0
 fi
@@ -35,5 +47,6 @@ find "$sysroot" -type l -lname '/*' | while read -r link; do
   target="$(readlink "$link")"
   ln -sfn "$(realpath -m --relative-to="$(dirname "$link")" "$sysroot$target")" "$link"
 done
+alternatives "$sysroot"
 touch "$sysroot/.deepnav-sysroot"
 du -sh "$sysroot"
