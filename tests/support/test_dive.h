@@ -5,6 +5,8 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -13,8 +15,10 @@
 namespace deepnav::testing {
 
 // Writes a simulated dive of the default scenario shortened to duration_s, and returns its path.
+// edits: {"key: default value" as written in default.yaml, "key: new value"} applied to its text.
 inline std::string makeTestDive(const std::string& name, double duration_s, std::uint64_t seed = 7,
-                                bool render = true) {
+                                bool render = true,
+                                const std::vector<std::pair<std::string, std::string>>& edits = {}) {
   // ctest runs test cases as parallel processes: each writes its own files.
   const std::string dir = ::testing::TempDir() + "deepnav_" + std::to_string(::getpid()) + "_";
   std::ifstream in(std::string(DEEPNAV_SOURCE_DIR) + "/tools/sim/scenarios/default.yaml");
@@ -24,6 +28,11 @@ inline std::string makeTestDive(const std::string& name, double duration_s, std:
   const std::string key = "duration_s: 120.0";
   const auto at = yaml.find(key);
   if (at != std::string::npos) yaml.replace(at, key.size(), "duration_s: " + std::to_string(duration_s));
+  for (const auto& [from, to] : edits) {
+    const auto where = yaml.find(from);
+    EXPECT_NE(where, std::string::npos) << "default.yaml has no '" << from << "'";
+    if (where != std::string::npos) yaml.replace(where, from.size(), to);
+  }
   const std::string scenario = dir + name + ".yaml";
   std::ofstream(scenario) << yaml;
   sim::DiveRecordOptions o;

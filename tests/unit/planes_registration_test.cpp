@@ -322,3 +322,43 @@ TEST(PlaneRegistration, ParallelPlanesWithInconsistentOffsetsAreNotMatchedTogeth
 
 }  // namespace
 }  // namespace deepnav
+
+namespace deepnav {
+namespace {
+
+// A turn about an axis close to both normals barely moves them, so each pair passes the normal-change
+// prior; the fitted rotation must respect the prior as well.
+TEST(PlaneRegistration, FittedRotationBeyondThePriorIsRejected) {
+  // GIVEN two planes 15 deg either side of the camera's -z axis, seen again after a 30 deg turn about z
+  Eigen::Isometry3d T_a_b = Eigen::Isometry3d::Identity();
+  T_a_b.linear() = Eigen::AngleAxisd(30.0 * kDeg, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  const Plane p1 = makePlane(Eigen::Vector3d(std::sin(15.0 * kDeg), 0, -std::cos(15.0 * kDeg)), -1.5, 0.002, 0.002, 30.0);
+  const Plane p2 = makePlane(Eigen::Vector3d(0, std::sin(15.0 * kDeg), -std::cos(15.0 * kDeg)), -2.0, 0.002, 0.002, 30.0);
+  PlaneSet a, b;
+  ASSERT_TRUE(a.allocate(2, 1, 1));
+  ASSERT_TRUE(b.allocate(2, 1, 1));
+  *a.addPlane() = p1;
+  *a.addPlane() = p2;
+  *b.addPlane() = transformToB(p1, T_a_b);
+  *b.addPlane() = transformToB(p2, T_a_b);
+  // WHEN registered with a 10 deg prior (each normal moves by under 8 deg)
+  PlaneRegistrationConfig config;
+  config.max_normal_change_deg = 10.0;
+  PlaneRegistrar registrar;
+  ASSERT_TRUE(registrar.init(config));
+  PlaneRegistrationResult result;
+  ASSERT_TRUE(registrar.registerPlanes(a, b, &result));
+  // THEN the 30 deg fit is refused as a wrong correspondence
+  EXPECT_FALSE(result.valid);
+  EXPECT_TRUE(result.rejected_by_prior);
+  EXPECT_EQ(result.status, PlaneRegistrationStatus::kNoMatches);
+  // and with the default 45 deg prior the same planes give the true turn
+  ASSERT_TRUE(registrar.init(PlaneRegistrationConfig{}));
+  ASSERT_TRUE(registrar.registerPlanes(a, b, &result));
+  ASSERT_TRUE(result.valid);
+  EXPECT_FALSE(result.rejected_by_prior);
+  EXPECT_LT(result.q_cama_camb.angularDistance(Eigen::Quaterniond(T_a_b.linear())), 1e-6);
+}
+
+}  // namespace
+}  // namespace deepnav

@@ -113,6 +113,14 @@ bool PlaneRegistrar::registerPlanes(const PlaneSet& a, const PlaneSet& b,
     if (kept == count) break;
     count = kept;
   }
+  // The rotation prior bounds an observable fit too: matched normals that agree only after a turn beyond
+  // it are a wrong correspondence (typically two near-parallel pairs swapped), not motion.
+  const double turn_rad = Eigen::AngleAxisd(rotation.q_a_b).angle();
+  if (count > 0 && rotation.observable_dims == 3 && rotationObservable(a, count, matches_) &&
+      std::min(turn_rad, 2.0 * M_PI - turn_rad) > config_.max_normal_change_deg * kDegToRad) {
+    result->rejected_by_prior = true;
+    count = 0;
+  }
   if (count == 0) {
     result->status = PlaneRegistrationStatus::kNoMatches;
     return true;

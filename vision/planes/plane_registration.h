@@ -14,7 +14,8 @@ namespace deepnav {
 enum class PlaneRegistrationStatus {
   kOk = 0,                // rotation observable (>= 2 non-parallel matched planes)
   kNoCandidates,          // no pair passed the unary tests
-  kNoMatches,             // no consistent correspondence (or all rejected by the verification)
+  kNoMatches,             // no consistent correspondence (or all rejected by the verification or the
+                          // rotation prior)
   kRotationUnobservable,  // only one plane, or only parallel planes, matched
 };
 
@@ -39,6 +40,7 @@ struct PlaneRegistrationResult {
   std::array<PlaneMatch, PlaneCorrespondenceSearch::kMaxMatches> matches{};
   int candidate_pairs = 0;
   int rejected_by_verification = 0;
+  bool rejected_by_prior = false;  // the fitted rotation exceeded max_normal_change_deg
   bool search_exhausted = false;
 };
 

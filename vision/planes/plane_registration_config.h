@@ -10,7 +10,8 @@ struct PlaneRegistrationConfig {
   // which grows with the point count and the plane's extent): 3.0 admits ~2.7x the points.
   double max_log_size_ratio = 3.0;
   // Prior on the rotation between the two images: angle between n_i and n_j compared directly
-  // (deg, 180 disables). Vision runs at a few Hz; 45 deg is far beyond an ROV's turn rate.
+  // (deg, 180 disables), and the bound on the fitted rotation (a larger one is rejected as a wrong
+  // correspondence). Vision runs at a few Hz; 45 deg is far beyond an ROV's turn rate.
   double max_normal_change_deg = 45.0;
   // Binary tests on two candidate pairs (i, j), (k, l):
   double max_cross_angle_diff_deg = 4.0;     // |angle(n_i, n_k) - angle(n_j, n_l)|

@@ -134,7 +134,7 @@ bool Scene::intersect(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float 
     }
   }
   float t_seabed = 0.0f;
-  if (seabed_.intersect(o, d, t_min, t_max, &t_seabed)) {
+  if (seabed_.intersect(o, d, t_min, t_max, &t_seabed, &hit->local.n)) {
     hit->t = t_seabed;
     hit->primitive = kSeabed;
     hit->local.p = o + t_seabed * d;

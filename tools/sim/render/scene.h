@@ -22,7 +22,7 @@ namespace deepnav::sim {
 struct SceneHit {
   float t = 0.0f;
   int primitive = -1;
-  LocalHit local;  // the seabed fills only local.p (in P)
+  LocalHit local;  // the seabed fills local.p and local.n (in P)
 };
 
 // The rendered world in the panel frame P (origin at the footprint centre on the seabed, x = front
@@ -51,7 +51,7 @@ class Scene {
   bool intersect(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t_min, float t_max,
                  SceneHit* hit) const;
   // Unit normal in P at a hit (turned towards the ray, except on the seabed: up).
-  Eigen::Vector3f normalAt(const SceneHit& hit, const Eigen::Vector3f& o, const Eigen::Vector3f& d) const;
+  Eigen::Vector3f normalAt(const SceneHit& hit) const;
   // Albedo (BGR) at a hit; footprint2_m2 is the squared size of a pixel there, to choose the texture
   // level.
   Eigen::Vector3f albedoAt(const SceneHit& hit, const Eigen::Vector3f& o, const Eigen::Vector3f& d,
@@ -72,11 +72,8 @@ class Scene {
 };
 
 // Inline: called once per pixel.
-inline Eigen::Vector3f Scene::normalAt(const SceneHit& hit, const Eigen::Vector3f& o, const Eigen::Vector3f& d) const {
-  if (hit.primitive == kSeabed) {
-    const Eigen::Vector3f p = o + hit.t * d;
-    return seabed_.normalAt(p.x(), p.y());
-  }
+inline Eigen::Vector3f Scene::normalAt(const SceneHit& hit) const {
+  if (hit.primitive == kSeabed) return hit.local.n;  // filled by Seabed::intersect
   return primitives_[hit.primitive].R_panel_local * hit.local.n;
 }
 

@@ -63,7 +63,7 @@ Eigen::Vector3f Seabed::normalAt(float x_m, float y_m) const {
   // thousandths with this gentle relief: no visible facets).
   float h = 0.0f, hx = 0.0f, hy = 0.0f;
   sampleHeightAndSlope(x_m, y_m, &h, &hx, &hy);
-  return Eigen::Vector3f(-hx, -hy, 1.0f) * (1.0f / std::sqrt(1.0f + hx * hx + hy * hy));
+  return normalOfSlope(hx, hy);
 }
 
 Eigen::Vector3f Seabed::albedoAt(float x_m, float y_m, float footprint2_m2) const {
@@ -71,8 +71,8 @@ Eigen::Vector3f Seabed::albedoAt(float x_m, float y_m, float footprint2_m2) cons
   return texture_.sample(x_m * kTexelsPerM, y_m * kTexelsPerM, footprint2_m2 * kTexelsPerM * kTexelsPerM);
 }
 
-bool Seabed::intersect(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t_min, float t_max,
-                       float* t) const {
+bool Seabed::intersect(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t_min, float t_max, float* t,
+                       Eigen::Vector3f* n, float hint_t) const {
   // Reciprocals once: divisions were most of the cost of a seabed pixel.
   const Eigen::Vector3f inv(d.x() != 0.0f ? 1.0f / d.x() : INFINITY, d.y() != 0.0f ? 1.0f / d.y() : INFINITY,
                             d.z() != 0.0f ? 1.0f / d.z() : INFINITY);
@@ -97,17 +97,28 @@ bool Seabed::intersect(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float
     s0 = std::max(s0, a), s1 = std::min(s1, b);
   }
   const float t_plane = d.z() != 0.0f ? -o.z() * inv.z() : INFINITY;
+  const auto flat = [&]() {
+    *t = t_plane;
+    if (n) *n = Eigen::Vector3f::UnitZ();
+    return true;
+  };
   if (!(s0 < s1)) {  // never over the relief
-    if (t_plane > t0 && t_plane < t1) return *t = t_plane, true;
+    if (t_plane > t0 && t_plane < t1) return flat();
     return false;
   }
-  if (t_plane > t0 && t_plane < s0) return *t = t_plane, true;  // flat ground before the relief
-  if (march(o, d, s0, s1, t)) return true;
-  if (t_plane > s1 && t_plane < t1) return *t = t_plane, true;  // flat ground after it
+  if (t_plane > t0 && t_plane < s0) return flat();  // flat ground before the relief
+  if (march(o, d, s0, s1, hint_t, t, n)) return true;
+  if (t_plane > s1 && t_plane < t1) return flat();  // flat ground after it
   return false;
 }
 
-bool Seabed::march(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t0, float t1, float* t) const {
+bool Seabed::march(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t0, float t1, float hint_t, float* t,
+                   Eigen::Vector3f* n) const {
+  const auto hitAt = [&](float t_hit) {
+    *t = t_hit;
+    if (n) *n = normalAt(o.x() + t_hit * d.x(), o.y() + t_hit * d.y());
+    return true;
+  };
   const float horizontal = std::sqrt(d.x() * d.x() + d.y() * d.y());
   const float inv_horizontal = horizontal > 1e-6f ? 1.0f / horizontal : INFINITY;
   const float descent = -d.z() * inv_horizontal;  // metres down per horizontal metre
@@ -116,9 +127,11 @@ bool Seabed::march(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t0,
     // holds at most one crossing. At the slab's entry (z = max height) the ray is above the relief and
     // at its exit (z = min height) below: no evaluation needed there; elsewhere (clipped by a nearer
     // hit or the relief square) check the sign. Start from where the ray meets z = 0.
-    if (o.z() + t0 * d.z() < max_height_m_ && above(o, d, t0) <= 0.0f) return *t = t0, true;
+    // Start from a neighbouring ray's hit when it lies in the bracket, else where the ray meets z = 0.
+    if (o.z() + t0 * d.z() < max_height_m_ && above(o, d, t0) <= 0.0f) return hitAt(t0);
     if (o.z() + t1 * d.z() > min_height_m_ && above(o, d, t1) > 0.0f) return false;
-    return refine(o, d, t0, t1, std::clamp(-o.z() / d.z(), t0, t1), t);
+    const float start = hint_t > t0 && hint_t < t1 ? hint_t : std::clamp(-o.z() / d.z(), t0, t1);
+    return refine(o, d, t0, t1, start, t, n);
   }
   const float length = std::sqrt(horizontal * horizontal + d.z() * d.z());
   // Over a horizontal distance s the gap between ray and relief shrinks by at most (descent + max
@@ -126,26 +139,29 @@ bool Seabed::march(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t0,
   // coarse step, whose overshoot the refinement below recovers.
   const float inv_closing = 1.0f / std::max(descent + max_slope_, 1e-3f);
   float ta = t0, fa = above(o, d, ta);
-  if (fa <= 0.0f) return *t = ta, true;
+  if (fa <= 0.0f) return hitAt(ta);
   while (ta < t1) {
     const float step_m = std::max(std::max(kMarchStep_m, kFarStepFraction * ta * length), fa * inv_closing);
     const float tb = std::min(ta + step_m * inv_horizontal, t1);
     const float fb = above(o, d, tb);
-    if (fb <= 0.0f) return refine(o, d, ta, tb, (ta * fb - tb * fa) / (fb - fa), t);
+    if (fb <= 0.0f) return refine(o, d, ta, tb, (ta * fb - tb * fa) / (fb - fa), t, n);
     ta = tb, fa = fb;
   }
   return false;
 }
 
-bool Seabed::refine(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float lo, float hi, float start,
-                    float* t) const {
+bool Seabed::refine(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float lo, float hi, float start, float* t,
+                    Eigen::Vector3f* n) const {
   // Newton on f(t) = ray z - h with the exact slope of the bilinear relief, kept inside the bracket
   // [lo, hi] (f(lo) > 0 >= f(hi)) by bisecting when a step leaves it; to 0.2 mm in height, or a last
   // Newton step shorter than 0.5 mm along the ray (its residual is second order: micrometres).
+  // The normal comes from the slope of the last evaluation (within 0.5 mm of the hit: same patch,
+  // or a slope change of a few thousandths across a cell edge).
   const float step_tolerance = 5e-4f / d.norm();
   float tm = start;
+  float hx = 0.0f, hy = 0.0f;
   for (int k = 0; k < kRefineIterations; ++k) {
-    float h = 0.0f, hx = 0.0f, hy = 0.0f;
+    float h = 0.0f;
     sampleHeightAndSlope(o.x() + tm * d.x(), o.y() + tm * d.y(), &h, &hx, &hy);
     const float f = o.z() + tm * d.z() - h;
     if (std::abs(f) < 2e-4f) break;
@@ -159,6 +175,7 @@ bool Seabed::refine(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float lo
     tm = next > lo && next < hi ? next : 0.5f * (lo + hi);
   }
   *t = tm;
+  if (n) *n = normalOfSlope(hx, hy);
   return true;
 }
 

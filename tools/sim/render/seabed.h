@@ -1,4 +1,5 @@
 #pragma once
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -24,7 +25,12 @@ class Seabed {
   // faster than the steepest relief slope crosses it once: its slab entry and exit go straight to the
   // refinement.
   // Outside the relief square the plane z = 0 is hit analytically.
-  bool intersect(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t_min, float t_max, float* t) const;
+  // n (optional): the unit normal at the hit, from the slope the refinement already evaluated (saves a
+  // second relief lookup in shading). hint_t (optional, > 0): the hit of a neighbouring ray, a better
+  // first Newton guess than the mean plane when the ray crosses the relief once (exactness unchanged:
+  // the bracket still decides).
+  bool intersect(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t_min, float t_max, float* t,
+                 Eigen::Vector3f* n = nullptr, float hint_t = 0.0f) const;
 
   float heightAt(float x_m, float y_m) const;
   Eigen::Vector3f normalAt(float x_m, float y_m) const;
@@ -33,8 +39,13 @@ class Seabed {
   float maxHeight_m() const { return max_height_m_; }
 
  private:
-  bool march(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t0, float t1, float* t) const;
-  bool refine(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float lo, float hi, float start, float* t) const;
+  bool march(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t0, float t1, float hint_t, float* t,
+             Eigen::Vector3f* n) const;
+  bool refine(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float lo, float hi, float start, float* t,
+              Eigen::Vector3f* n) const;
+  static Eigen::Vector3f normalOfSlope(float hx, float hy) {
+    return Eigen::Vector3f(-hx, -hy, 1.0f) * (1.0f / std::sqrt(1.0f + hx * hx + hy * hy));
+  }
   float sampleHeight(float x_m, float y_m) const;
   // Height and its exact slope (of the bilinear patch) at (x, y).
   void sampleHeightAndSlope(float x_m, float y_m, float* h, float* hx, float* hy) const;

@@ -108,9 +108,10 @@ void ViewRenderer::renderTile(int u0, int v0, int u1, int v1, const LampSet& lam
   SceneHit hit;
   LocalHit local;
   for (int v = v0; v < v1; ++v) {
+    float seabed_hint_t = 0.0f;  // the previous pixel's seabed hit: Newton's first guess for this one
     for (int u = u0; u < u1; ++u) {
       const float inv_len = inv_ray_length_[static_cast<std::size_t>(v) * w + u];
-      const Eigen::Vector3f d = ray_base_ + static_cast<float>(u) * ray_du_ + static_cast<float>(v) * ray_dv_;
+      const Eigen::Vector3f d = pixelRay(u, v);
       float t_best = kMaxRange_m * inv_len;
       hit.primitive = -2;
       const float uf = static_cast<float>(u), vf = static_cast<float>(v);
@@ -126,10 +127,12 @@ void ViewRenderer::renderTile(int u0, int v0, int u1, int v1, const LampSet& lam
       }
       // The seabed lies below its max height: a ray still above it at t_best cannot meet it before.
       float t_seabed = 0.0f;
-      if (origin_.z() + t_best * d.z() <= seabed_top_m_ && scene_->seabed().intersect(origin_, d, kTMin, t_best, &t_seabed)) {
+      if (origin_.z() + t_best * d.z() <= seabed_top_m_ &&
+          scene_->seabed().intersect(origin_, d, kTMin, t_best, &t_seabed, &hit.local.n, seabed_hint_t)) {
         t_best = t_seabed;
         hit.primitive = Scene::kSeabed;
       }
+      seabed_hint_t = hit.primitive == Scene::kSeabed ? t_best : 0.0f;
       const std::size_t pixel = static_cast<std::size_t>(v) * w + u;
       Eigen::Vector3f L = backscatter_;
       if (hit.primitive != -2) {
@@ -155,7 +158,7 @@ Eigen::Vector3f ViewRenderer::shade(const SceneHit& hit, const Eigen::Vector3f& 
                                     const LampSet& lamps) const {
   const float distance = hit.t / inv_ray_length;
   const Eigen::Vector3f p = origin_ + hit.t * d;
-  const Eigen::Vector3f n = scene_->normalAt(hit, origin_, d);
+  const Eigen::Vector3f n = scene_->normalAt(hit);
   // A pixel's footprint at the hit, widened for oblique views: fronto / sqrt(cos), the geometric mean
   // of its two axes (texture level choice only, so the square root is left to the comparison).
   const float fronto_m = hit.t * inv_fx_;

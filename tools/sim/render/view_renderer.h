@@ -48,6 +48,15 @@ class ViewRenderer {
     Eigen::Vector3f axis;
     float cos_half_angle;
   };
+  // The ray of pixel (u, v) from origin_ in the panel frame, scaled so that its component along the
+  // optical axis is 1 (the ray parameter of a hit is its depth): the one place a camera model enters.
+  // Pinhole: d = R_panel_cam (x_n, y_n, 1), linear in (u, v). A non-pinhole model (a flat port's
+  // refraction, tools/sim/render/flat_port.*) replaces this and must then also replace the two places
+  // that rely on the linearity: tileCone() (corner rays bound the tile) and the per-candidate local
+  // direction in renderTile() (c.base + u c.du + v c.dv = R_local_panel d), and give origin_ per pixel.
+  Eigen::Vector3f pixelRay(int u, int v) const {
+    return ray_base_ + static_cast<float>(u) * ray_du_ + static_cast<float>(v) * ray_dv_;
+  }
   Cone tileCone(int u0, int v0, int u1, int v1) const;
   void listCandidates(const Cone& cone);
   void renderTile(int u0, int v0, int u1, int v1, const LampSet& lamps, float* radiance, float* depth_m);
