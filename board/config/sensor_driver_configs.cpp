@@ -54,4 +54,14 @@ bool modbusDepthConfig(const BoardConfig& b, ModbusDepthConfig* c, std::string* 
   return true;
 }
 
+bool sensorThreadsConfig(const BoardConfig& b, SensorThreadsConfig* c, std::string* error) {
+  *c = SensorThreadsConfig{};
+  if (!b.sources.dvl_serial.empty() && !dvlSerialConfig(b, &c->dvl.emplace(), error)) return false;
+  if (!b.sources.ahrs_serial.empty() && !ahrsSerialConfig(b, &c->ahrs.emplace(), error)) return false;
+  if (!b.sources.can_interface.empty() && !canSensorConfig(b, &c->can.emplace(), error)) return false;
+  if (!b.sources.depth_serial.empty() && !modbusDepthConfig(b, &c->depth.emplace(), error)) return false;
+  c->depth_rate_hz = b.modbus_depth.rate_hz;
+  return true;
+}
+
 }  // namespace deepnav

@@ -4,6 +4,7 @@
 #include "board/config/board_config.h"
 #include "drivers/can/can_sensor_driver.h"
 #include "drivers/modbus/modbus_depth_sensor.h"
+#include "drivers/sensor_io/sensor_threads.h"
 #include "drivers/serial/serial_sensor_driver.h"
 
 namespace deepnav {
@@ -15,5 +16,9 @@ bool dvlSerialConfig(const BoardConfig& board, SerialSensorConfig* config, std::
 bool ahrsSerialConfig(const BoardConfig& board, SerialSensorConfig* config, std::string* error);
 bool canSensorConfig(const BoardConfig& board, CanSensorConfig* config, std::string* error);
 bool modbusDepthConfig(const BoardConfig& board, ModbusDepthConfig* config, std::string* error);
+
+// Every sensor the board lists: a driver for each non-empty sources.dvl_serial, ahrs_serial,
+// can_interface, depth_serial (what `deepnav run` starts with SensorThreads).
+bool sensorThreadsConfig(const BoardConfig& board, SensorThreadsConfig* config, std::string* error);
 
 }  // namespace deepnav

@@ -24,6 +24,9 @@ TEST(SensorDriverConfigs, DefaultsAreUsable) {
   ASSERT_TRUE(modbusDepthConfig(b, &m, &error)) << error;
   EXPECT_EQ(m.map.type, DepthRegisterMap::Type::kF32);
   EXPECT_EQ(m.parity, 'N');
+  SensorThreadsConfig t;
+  ASSERT_TRUE(sensorThreadsConfig(b, &t, &error)) << error;
+  EXPECT_FALSE(t.dvl || t.ahrs || t.can || t.depth);  // the simulated board lists no devices
 }
 
 TEST(SensorDriverConfigs, BoardFileSetsTheDrivers) {
@@ -55,6 +58,11 @@ modbus_depth: {baud: 19200, parity: E, slave_id: 3, register_kind: holding, regi
   EXPECT_EQ(m.map.kind, DepthRegisterMap::Kind::kHolding);
   EXPECT_EQ(m.map.address, 40);
   EXPECT_DOUBLE_EQ(m.map.scale_pa, 100.0);
+  SensorThreadsConfig t;
+  ASSERT_TRUE(sensorThreadsConfig(b, &t, &error)) << error;
+  EXPECT_TRUE(t.dvl && t.can && t.depth);
+  EXPECT_FALSE(t.ahrs);  // sources.ahrs_serial not set
+  EXPECT_EQ(t.depth->device, "/dev/ttyUSB0");
   EXPECT_FALSE(loadBoardConfigText("serial: {dvl_protocol: pd5}\n", "bad.yaml", &b, &error));
   EXPECT_NE(error.find("serial.dvl_protocol"), std::string::npos) << error;
   ASSERT_TRUE(loadBoardConfigText("can: {imu_mapping: '0x100:9:i16le:1:gyro_x'}\n", "bad.yaml", &b, &error)) << error;
