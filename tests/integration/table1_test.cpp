@@ -1,5 +1,5 @@
 // deepnav-table1's evaluation on a short rendered dive (the vehicle holding 2 m from the panel's left
-// face, seabed below, moderate water): the
+// face, cameras pitched down to the seabed, moderate water): the
 // GT row must be exact and its planes must register with a small rotation error; the matchers must
 // be sane. The full Table I on the default dive is in tools/eval/README.md.
 #include "tools/eval/table1.h"
@@ -13,13 +13,17 @@ namespace {
 
 TEST(Table1, ShortDiveGivesAnExactGtRowAndSaneMatchers) {
   // GIVEN a 3 s rendered dive (31 stereo pairs with truth maps) that starts 2 m from the left face
-  const std::string dive =
-      testing::makeTestDive("table1", 3.0, 7, true, {{"start_distance_m: 8.0", "start_distance_m: 2.0"}});
+  // and at the face's depth, cameras pitched 25 deg down: the face and the seabed in view (two planes).
+  const std::string dive = testing::makeTestDive(
+      "table1", 3.0, 7, true,
+      {{"start_distance_m: 8.0", "start_distance_m: 2.0"},
+       {"start_depth_m: 998.0", "start_depth_m: 998.5"},
+       {"mount_rpy_deg: [0.0, 0.0, 0.0]   # [-360, 360] zero:", "mount_rpy_deg: [0.0, 25.0, 0.0]   # [-360, 360] zero:"}});
   eval::Table1Options o;
   o.eval_from_s = 0.5;
   o.map_every = 5;          // stage-1 map from the pairs at 0, 0.5, 1.0, ... s
   o.max_frames = 10;
-  o.num_disparities = 256;  // the face at ~1.4 m from the camera: ~150 px
+  // The board's dense chain (half size, 96 disparities): the face ~1.4 m from the camera is at ~75 px.
   // WHEN Table I is computed
   eval::Table1Result r;
   std::string error;

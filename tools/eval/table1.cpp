@@ -4,8 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <Eigen/Eigenvalues>
 #include <memory>
 #include <sstream>
 #include <vector>
@@ -250,14 +248,6 @@ struct Evaluator {
           if (registered) {
             const Eigen::Quaterniond q_est = reg.q_cama_camb.normalized();
             row.errors_deg.push_back(q_est.angularDistance(q_true) * kRadToDeg);
-            if (std::getenv("TABLE1_DEBUG") && row.errors_deg.back() > 3.0) {
-              const Eigen::Matrix3d C = reg.cov.bottomRightCorner<3, 3>();
-              Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(C);
-              std::fprintf(stderr, "DBG row %d t=%.1f err=%.2f matched=%d sigma_max=%.3f deg planes=%d/%d\n", r,
-                           usToS(truth.t_us), row.errors_deg.back(), reg.matched_planes,
-                           std::sqrt(es.eigenvalues().maxCoeff()) * kRadToDeg, row.planes[1 - row.current].size(),
-                           planes.size());
-            }
             row.true_rotations_deg.push_back(Eigen::Quaterniond::Identity().angularDistance(q_true) * kRadToDeg);
           }
         }
