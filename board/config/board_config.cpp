@@ -26,6 +26,9 @@ const std::array kBoardParams = {
     P{"loop.late_tick_tolerance", ParamType::kDouble, "period", 0.05, 10.0, "0.5", "",
       "a tick that starts later than this fraction of the period counts as late",
       DEEPNAV_FIELD(loop.late_tick_tolerance)},
+    P{"loop.output_tau_s", ParamType::kDouble, "s", 0, 5, "0.3", "",
+      "published pose follows the EKF's corrections with this time constant (output predictor; 0: none)",
+      DEEPNAV_FIELD(loop.output_tau_s)},
     P{"buffers.imu", ParamType::kInt, "samples", 8, 65536, "512", "", "IMU ring capacity",
       DEEPNAV_FIELD(buffers.imu)},
     P{"buffers.dvl", ParamType::kInt, "samples", 4, 65536, "64", "", "DVL ring capacity",
@@ -181,6 +184,15 @@ const std::array kBoardParams = {
       "dense disparity search range at the reduced size", DEEPNAV_FIELD(vision.dense_disparities)},
     P{"vision.filter_with_map", ParamType::kBool, "-", 0, 0, "true", "",
       "stage 2: keep only cloud points near the stage-1 workspace map", DEEPNAV_FIELD(vision.filter_with_map)},
+    P{"vision.map_min_kept_fraction", ParamType::kDouble, "-", 0, 1, "0.3", "",
+      "stage 2: when the map filter would keep less than this share of a cloud, the view lies outside the "
+      "mapped workspace and the cloud is used unfiltered", DEEPNAV_FIELD(vision.map_min_kept_fraction)},
+    P{"vision.planes_covariance_scale", ParamType::kDouble, "-", 1, 1e8, "1000", "",
+      "multiplies the plane registration covariance: the per-point stereo errors of window matching are "
+      "correlated, so the independent-noise covariance is optimistic (on simulated dives the rotation errors "
+      "were 30-100x the predicted sigma)", DEEPNAV_FIELD(vision.planes_covariance_scale)},
+    P{"vision.planes_partial", ParamType::kBool, "-", 0, 0, "false", "",
+      "fuse single-plane registrations (two rotation axes, none about the normal)", DEEPNAV_FIELD(vision.planes_partial)},
     P{"vision.map_resolution_m", ParamType::kDouble, "m", 0.01, 1, "0.05", "", "workspace octomap leaf size",
       DEEPNAV_FIELD(vision.map_resolution_m)},
     P{"vision.map_filter_distance_m", ParamType::kDouble, "m", 0.01, 2, "0.10", "",

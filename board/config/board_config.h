@@ -20,6 +20,7 @@ struct BoardConfig {
     int vision_budget_us;    // vision worker budget per frame
     int vision_latency_ms;   // replay: when a frame's vision result becomes available after capture
     double late_tick_tolerance;  // a tick later than this fraction of the period counts as late
+    double output_tau_s;     // time constant of the published pose's smoothing (0: the EKF's pose)
   } loop;
   struct Buffers {
     int imu;                 // ring capacities, in samples
@@ -89,6 +90,9 @@ struct BoardConfig {
     int dense_scale_down;         // 1 or 2
     int dense_disparities;        // at the reduced size
     bool filter_with_map;
+    double map_min_kept_fraction; // below it the view is outside the map: filter skipped
+    double planes_covariance_scale;  // multiplies the plane registration covariance
+    bool planes_partial;          // single-plane (2-axis) registrations become measurements
     double map_resolution_m;
     double map_filter_distance_m;
     int map_every_n_frames;

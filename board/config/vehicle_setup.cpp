@@ -79,6 +79,9 @@ VisionPipelineConfig visionConfig(const VehicleSetup& s) {
   v.dense.scale_down = c.dense_scale_down;
   v.dense.num_disparities = c.dense_disparities;
   v.filter_with_map = c.filter_with_map;
+  v.map_min_kept_fraction = c.map_min_kept_fraction;
+  v.planes.registration.covariance_scale = c.planes_covariance_scale;
+  v.planes.use_partial = c.planes_partial;
   v.workspace.map.resolution_m = c.map_resolution_m;
   v.workspace.map.filter_distance_m = c.map_filter_distance_m;
   v.workspace.insert_every_n_frames = c.map_every_n_frames;

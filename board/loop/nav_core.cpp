@@ -39,6 +39,7 @@ bool NavCore::init(const VehicleSetup& setup, RecordSink* sink, std::string* err
   fuse_markers_in_stage2_ = c.stage.fuse_markers_in_stage2;
   // One clone less than the EKF holds: the new pair's clone is taken after the oldest is released.
   vo_.init(robotFromCamera(c), c.ekf.max_clones);
+  smoother_.init(c.loop.output_tau_s);
   StageConfig stage;
   stage.min_workspace_time_s = c.stage.min_workspace_time_s;
   stage.min_faces_seen_fraction = c.stage.min_faces_seen_fraction;
@@ -118,6 +119,7 @@ const NavSolution& NavCore::tick(TimeUs t_us) {
   feedback_.stage = solution_.stage;
   feedback_.panel_fixed = in.panel_fixed;
   if (in.panel_fixed) feedback_.T_odom_panel = markers_.panelEstimator().estimate().T_odom_panel();
+  smoother_.apply(&solution_);  // after the feedback: the vision worker and markers use the EKF's pose
   if (sink_) sink_->recordSolution(solution_);
   return solution_;
 }

@@ -8,6 +8,7 @@
 #include "nav/pipeline/marker_fusion.h"
 #include "nav/pipeline/pose_history.h"
 #include "nav/pipeline/vo_fusion.h"
+#include "nav/pipeline/output_smoother.h"
 #include "board/loop/vision_context_source.h"
 #include "nav/stage/stage_machine.h"
 #include "nav/types/input_sample.h"
@@ -59,6 +60,7 @@ class NavCore {
   PoseHistory poses_;
   MarkerFusion markers_;
   VoFusion vo_;
+  OutputSmoother smoother_;
   StageMachine stage_;
   NavFeedback feedback_;
   bool map_ready_ = false;

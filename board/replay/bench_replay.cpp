@@ -130,6 +130,12 @@ void noteFrame(BenchRun* run, const VisionContext& context, const VisionResult& 
   f.orb_tracked = r.orb_tracked;
   f.planes = r.planes;
   f.markers = r.marker_count;
+  for (int i = 0; i < r.marker_count && i < VisionResult::kMaxMarkers && run->setup.has_panel; ++i) {
+    if (const PanelMarker* m = run->setup.panel.marker(r.markers[static_cast<std::size_t>(i)].id)) {
+      f.face = m->face;
+      break;
+    }
+  }
   f.orb_us = r.orb_us;
   f.planes_us = r.planes_us;
   f.map_us = r.map_us;

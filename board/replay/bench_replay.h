@@ -36,6 +36,7 @@ struct FrameStat {
   int orb_tracked = 0;
   int planes = 0;
   int markers = 0;
+  int face = -1;               // panel face of the first known marker seen (-1: none)
   std::uint32_t orb_us = 0, planes_us = 0, map_us = 0, total_us = 0;
 };
 

@@ -67,12 +67,13 @@ std::string jsonString(const std::string& s) {
 
 bool writeFrameStats(const std::string& path, const std::vector<FrameStat>& frames, std::string* error) {
   std::ofstream out(path);
-  out << "t_s,stage,image_quality,selected,orb_vo,planes_vo,orb_tracked,planes,markers,orb_us,planes_us,map_us,total_us\n";
+  out << "t_s,stage,image_quality,selected,orb_vo,planes_vo,orb_tracked,planes,markers,face,orb_us,planes_us,map_us,"
+         "total_us\n";
   char line[256];
   for (const FrameStat& f : frames) {
-    std::snprintf(line, sizeof line, "%.6f,%d,%.6f,%d,%d,%d,%d,%d,%d,%u,%u,%u,%u\n", f.t_s, f.stage, f.image_quality,
-                  f.selected, f.orb_vo ? 1 : 0, f.planes_vo ? 1 : 0, f.orb_tracked, f.planes, f.markers, f.orb_us,
-                  f.planes_us, f.map_us, f.total_us);
+    std::snprintf(line, sizeof line, "%.6f,%d,%.6f,%d,%d,%d,%d,%d,%d,%d,%u,%u,%u,%u\n", f.t_s, f.stage,
+                  f.image_quality, f.selected, f.orb_vo ? 1 : 0, f.planes_vo ? 1 : 0, f.orb_tracked, f.planes,
+                  f.markers, f.face, f.orb_us, f.planes_us, f.map_us, f.total_us);
     out << line;
   }
   if (!out.flush()) {

@@ -145,7 +145,7 @@ int main(int argc, char** argv) {
     T_odom_robot.linear() = picked.truth.q_odom_robot.toRotationMatrix();
     T_odom_robot.translation() = picked.truth.p_robot_in_odom_m;
     const Eigen::Isometry3d T_odom_cam = T_odom_robot * robotFromCamera(setup.config);
-    removed = pipeline.workspace().filter(T_odom_cam, false, Eigen::Isometry3d::Identity(), &cloud);
+    removed = pipeline.workspace().filterInMapFrame(T_odom_cam, &cloud);
     writeVoxelsCsv(out_dir + "/octomap_voxels.csv", pipeline.workspace().map());
   }
   PlaneExtractor extractor;

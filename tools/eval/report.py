@@ -1,11 +1,18 @@
 #!/usr/bin/python3
-"""Dive report: reads a replay output directory (summary.json, trajectory.tum, truth.tum) and writes
-report/index.html with figures made by matplotlib."""
+"""Dive report: reads replay output directories (summary.json, trajectory.tum, truth.tum, frames.csv)
+and writes report/index.html with matplotlib figures in the style of the DexROV paper:
+  Fig. 6  top view of the trajectory, each pose's position error as colour and circle size;
+  Fig. 5  orientation error over time per VO setting, marker-less intervals and panel-side changes
+          marked, and the image-quality curve m_I with the modality threshold under it;
+  one stereo pair with its disparity, the filtered cloud with its planes, the stage-1 octomap;
+  the paper's tables (from tools/eval/paper_tables.py)."""
 import argparse
+import csv
 import html
 import json
 import math
 import os
+import shutil
 
 import matplotlib
 
@@ -34,59 +41,171 @@ def errors(run):
     inside = (t >= tt[0]) & (t <= tt[-1])
     t, p, q = t[inside], p[inside], q[inside]
     p_true = interpolate(t, tt, pt)
-    # Nearest truth orientation (truth is at the IMU rate, 10 ms apart at most from an estimate).
     idx = np.clip(np.searchsorted(tt, t), 0, len(tt) - 1)
-    q_true = qt[idx]
-    return t, p, p_true, np.linalg.norm(p - p_true, axis=1), quat_angle_deg(q, q_true)
+    return t, p, p_true, np.linalg.norm(p - p_true, axis=1), quat_angle_deg(q, qt[idx])
+
+
+def read_frames(run):
+    path = os.path.join(run, "frames.csv")
+    if not os.path.exists(path):
+        return None
+    with open(path) as f:
+        rows = list(csv.DictReader(f))
+    return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]} if rows else None
 
 
 def top_view(path, p, p_true, pos_err):
     fig, ax = plt.subplots(figsize=(7, 6))
     ax.plot(p_true[:, 0], p_true[:, 1], color="0.6", lw=1, label="ground truth")
     step = max(1, len(p) // 400)
-    sc = ax.scatter(p[::step, 0], p[::step, 1], c=pos_err[::step], s=8 + 400 * pos_err[::step],
+    scale = 0.05 / max(pos_err.max(), 1e-6)
+    sc = ax.scatter(p[::step, 0], p[::step, 1], c=pos_err[::step], s=8 + 400 * scale * pos_err[::step],
                     cmap="viridis", alpha=0.7, label="estimate (colour and size: position error)")
     fig.colorbar(sc, ax=ax, label="position error (m)")
-    ax.set_xlabel("x east in odom (m)")
-    ax.set_ylabel("y north in odom (m)")
+    ax.set_xlabel("x in odom (m)")
+    ax.set_ylabel("y in odom (m)")
     ax.set_aspect("equal")
     ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.1), fontsize=8)
-    ax.set_title("Top view of the dive")
+    ax.set_title("Fig. 6: top view, EKF-adaptive (T_L2)")
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)
 
 
-def error_plot(path, t, pos_err, ori_err):
-    fig, (a1, a2) = plt.subplots(2, 1, figsize=(8, 5), sharex=True)
-    a1.plot(t - t[0], pos_err, lw=1)
-    a1.set_ylabel("position error (m)")
-    a2.plot(t - t[0], ori_err, lw=1, color="tab:red")
-    a2.set_ylabel("orientation error (deg)")
-    a2.set_xlabel("time (s)")
+def shade_intervals(ax, t, mask, colour, label):
+    """Shades the time spans where mask holds."""
+    first = True
+    start = None
+    for ti, m in zip(t, mask):
+        if m and start is None:
+            start = ti
+        if not m and start is not None:
+            ax.axvspan(start, ti, color=colour, alpha=0.15, lw=0, label=label if first else None)
+            first, start = False, None
+    if start is not None:
+        ax.axvspan(start, t[-1], color=colour, alpha=0.15, lw=0, label=label if first else None)
+
+
+def fig5(path, runs, frames, threshold, t0):
+    fig, (a1, a2) = plt.subplots(2, 1, figsize=(9, 6), sharex=True, gridspec_kw={"height_ratios": [2, 1]})
+    for name, run in runs.items():
+        if not os.path.exists(os.path.join(run, "truth.tum")):
+            continue
+        t, _, _, _, ori_err = errors(run)
+        a1.plot(t - t0, ori_err, lw=1, label=name)
+    if frames is not None:
+        tf = frames["t_s"] - t0
+        shade_intervals(a1, tf, frames["markers"] == 0, "tab:red", "no marker in view")
+        face = frames["face"]
+        last = None
+        for ti, fc in zip(tf, face):
+            if fc >= 0 and last is not None and fc != last:
+                a1.axvline(ti, color="k", ls=":", lw=0.8)
+            if fc >= 0:
+                last = fc
+        stage2 = tf[frames["stage"] == 2]
+        if len(stage2):
+            a1.axvline(stage2[0], color="tab:green", lw=1.2, label="stage 2 begins")
+        q = frames["image_quality"]
+        a2.plot(tf, q, lw=1, color="tab:blue", label="image quality m_I")
+        a2.axhline(threshold, color="tab:orange", ls="--", label=f"threshold {threshold}")
+        planes = frames["selected"] == 2
+        a2.scatter(tf[planes], q[planes], s=4, color="tab:purple", label="plane VO selected")
+        a2.set_ylim(0, 1)
+        a2.legend(fontsize=7, loc="lower left")
+    a1.set_ylabel("orientation error (deg)")
+    a1.legend(fontsize=7, loc="upper right")
+    a1.set_title("Fig. 5: orientation error per setting; dotted lines: panel-side changes")
+    a2.set_xlabel("dive time (s)")
+    a2.set_ylabel("m_I")
     fig.tight_layout()
     fig.savefig(path, dpi=110)
     plt.close(fig)
+
+
+def scatter3d(path, csv_path, title, colour_column=None, max_points=20000):
+    data = np.loadtxt(csv_path, delimiter=",", skiprows=1, ndmin=2)
+    if data.size == 0:
+        return False
+    if len(data) > max_points:
+        data = data[:: len(data) // max_points + 1]
+    fig = plt.figure(figsize=(7, 6))
+    ax = fig.add_subplot(projection="3d")
+    c = data[:, colour_column] if colour_column is not None else data[:, 2]
+    ax.scatter(data[:, 0], data[:, 1], data[:, 2], c=c, s=1, cmap="tab20" if colour_column else "viridis")
+    ax.set_xlabel("x (m)")
+    ax.set_ylabel("y (m)")
+    ax.set_zlabel("z (m)")
+    ax.set_title(title)
+    fig.tight_layout()
+    fig.savefig(path, dpi=100)
+    plt.close(fig)
+    return True
+
+
+def markdown_table_html(text):
+    """The Markdown tables of paper_tables.py as HTML (titles as headings)."""
+    out, rows = [], []
+
+    def flush():
+        if rows:
+            out.append("<table>" + "".join(rows) + "</table>")
+            rows.clear()
+
+    for line in text.splitlines():
+        if line.startswith("|"):
+            cells = [c.strip() for c in line.strip("|").split("|")]
+            if all(set(c) <= {"-"} for c in cells):
+                continue
+            tag = "th" if not rows else "td"
+            rows.append("<tr>" + "".join(f"<{tag}>{html.escape(c)}</{tag}>" for c in cells) + "</tr>")
+        else:
+            flush()
+            if line.strip():
+                out.append(f"<h3>{html.escape(line)}</h3>")
+    flush()
+    return "\n".join(out)
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__)
-    ap.add_argument("--run", required=True, help="replay output directory")
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--run", required=True, help="main replay output directory (EKF-adaptive)")
+    ap.add_argument("--compare", action="append", default=[], help="NAME=DIR of another setting for Fig. 5")
+    ap.add_argument("--tables", help="Markdown tables from paper_tables.py")
+    ap.add_argument("--figures", help="output directory of deepnav-figures")
+    ap.add_argument("--threshold", type=float, default=0.45, help="modality threshold drawn under m_I")
     ap.add_argument("--out", required=True, help="report directory")
     args = ap.parse_args()
     os.makedirs(args.out, exist_ok=True)
     with open(os.path.join(args.run, "summary.json")) as f:
         summary = json.load(f)
-    rows = []
-    figures = []
+    figures, rows = [], []
+    frames = read_frames(args.run)
     if os.path.exists(os.path.join(args.run, "truth.tum")):
-        t, p, p_true, pos_err, ori_err = errors(args.run)
+        t, p, p_true, pos_err, _ = errors(args.run)
         top_view(os.path.join(args.out, "top_view.png"), p, p_true, pos_err)
-        error_plot(os.path.join(args.out, "errors.png"), t, pos_err, ori_err)
-        figures = ["top_view.png", "errors.png"]
-        pe, oe = summary["position_error_m"], summary["orientation_error_deg"]
-        rows.append(("position error (m)", pe))
-        rows.append(("orientation error (deg)", oe))
+        runs = {"EKF-adaptive (T_L2)": args.run}
+        for item in args.compare:
+            name, _, path = item.partition("=")
+            runs[name] = path
+        fig5(os.path.join(args.out, "fig5.png"), runs, frames, args.threshold, t[0])
+        figures += ["top_view.png", "fig5.png"]
+        rows.append(("position error (m)", summary["position_error_m"]))
+        rows.append(("orientation error (deg)", summary["orientation_error_deg"]))
+    if args.figures and os.path.isdir(args.figures):
+        for name in ("left.png", "disparity.png", "planes.png"):
+            src = os.path.join(args.figures, name)
+            if os.path.exists(src):
+                shutil.copy(src, os.path.join(args.out, name))
+                figures.append(name)
+        cloud = os.path.join(args.figures, "cloud_planes.csv")
+        if os.path.exists(cloud) and scatter3d(os.path.join(args.out, "cloud_planes.png"), cloud,
+                                               "filtered cloud (camera frame), colour: plane", 3):
+            figures.append("cloud_planes.png")
+        voxels = os.path.join(args.figures, "octomap_voxels.csv")
+        if os.path.exists(voxels) and scatter3d(os.path.join(args.out, "octomap.png"), voxels,
+                                                "stage-1 workspace octomap (occupied voxels, odom)"):
+            figures.append("octomap.png")
     table = "".join(
         f"<tr><td>{html.escape(name)}</td><td>{s['mean']:.3f}</td><td>{s['std']:.3f}</td>"
         f"<td>{s['rms']:.3f}</td><td>{s['max']:.3f}</td></tr>" for name, s in rows)
@@ -95,15 +214,24 @@ def main():
         f"<tr><td>{html.escape(tk['name'])}</td><td>{tk['runs']}</td><td>{tk['overruns']}</td>"
         f"<td>{tk['mean_us']:.1f}</td><td>{tk['max_us']}</td></tr>" for tk in loop["tasks"])
     speed = summary["dive_s"] / summary["wall_s"] if summary["wall_s"] > 0 else math.inf
+    tables = ""
+    if args.tables and os.path.exists(args.tables):
+        with open(args.tables) as f:
+            tables = markdown_table_html(f.read())
     page = f"""<!doctype html><html><head><meta charset="utf-8"><title>deepnav dive report</title>
-<style>body{{font-family:sans-serif;max-width:900px;margin:auto}}td,th{{padding:2px 8px;text-align:right}}</style>
+<style>body{{font-family:sans-serif;max-width:1000px;margin:auto}}td,th{{padding:2px 8px;text-align:right}}
+table{{border-collapse:collapse}}tr:nth-child(even){{background:#f4f4f4}}</style>
 </head><body><h1>deepnav dive report</h1>
-<p>Mode: {summary['mode']}; dive {summary['dive_s']:.1f} s replayed in {summary['wall_s']:.2f} s
-({speed:.0f}x real time); {summary['ticks']} loop ticks; smoothness m<sub>A</sub> = {summary['smoothness_m_a']:.4f}.</p>
+<p>Main run (EKF-adaptive, T_L2): dive {summary['dive_s']:.1f} s replayed in {summary['wall_s']:.2f} s
+({speed:.1f}x real time); {summary['ticks']} loop ticks; stage 2 from {summary.get('stage2_at_s', -1):.1f} s;
+smoothness m<sub>A</sub> = {summary['smoothness_m_a']:.4f}.</p>
 <h2>Accuracy against ground truth</h2><table><tr><th></th><th>mean</th><th>std</th><th>rms</th><th>max</th></tr>{table}</table>
+<h2>The paper's tables</h2>{tables}
 <h2>Loop</h2><table><tr><th>task</th><th>runs</th><th>overruns</th><th>mean µs</th><th>max µs</th></tr>{tasks}</table>
 <p>Inputs: {html.escape(json.dumps(summary['inputs']))}</p>
-{''.join(f'<p><img src="{f}" style="max-width:100%"></p>' for f in figures)}
+<p>VO: {html.escape(json.dumps(summary.get('vo', {})))}; workspace: {html.escape(json.dumps(summary.get('workspace', {})))}</p>
+<h2>Figures</h2>
+{''.join(f'<p><img src="{f}" style="max-width:100%"><br>{html.escape(f)}</p>' for f in figures)}
 </body></html>"""
     with open(os.path.join(args.out, "index.html"), "w") as f:
         f.write(page)

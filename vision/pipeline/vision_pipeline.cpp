@@ -43,6 +43,7 @@ bool VisionPipeline::init(const VisionPipelineConfig& config, std::string* error
   config_.rig.height_px = config.height_px;
   config_.dense.channels = config.channels;
   frames_seen_ = 0;
+  outside_map_pairs_ = 0;
   if (config.detect_markers && !detector_.init(config.markers, error)) return false;
   if (config.run_orb && !orb_.init(config.orb, config_.rig, error)) return false;
   if (config.orb_max_tracked < 1) {
@@ -51,7 +52,7 @@ bool VisionPipeline::init(const VisionPipelineConfig& config, std::string* error
   }
   return selector_.init(config.modality, error) &&
          dense_.init(config_.dense, geometryOf(config_.rig), config.width_px, config.height_px, error) &&
-         dense_.allocateCloud(&cloud_) &&
+         dense_.allocateCloud(&cloud_) && dense_.allocateCloud(&unfiltered_) &&
          plane_vo_.init(config.planes, dense_.geometry(), dense_.rows(), dense_.cols(), config.dense.cloud_step_px,
                         error) &&
          workspace_.init(config.workspace, error);
@@ -86,14 +87,26 @@ void VisionPipeline::buildWorkspace(const StereoFrame& frame, const VisionContex
 void VisionPipeline::runPlanes(const StereoFrame& frame, const VisionContext& context, VisionResult* result) {
   const PartTimer timer(config_.clock_us);
   bool ok = dense_.compute(frame.left, frame.right, &cloud_);
-  if (ok && config_.filter_with_map) {
-    ok = context.has_pose &&
-         workspace_.filter(context.T_odom_cam, context.panel_fixed, context.T_odom_panel, &cloud_) >= 0;
-  }
+  if (ok && config_.filter_with_map) ok = filterByMap(context);
   if (ok && plane_vo_.process(frame.t_us, cloud_, &plane_out_)) result->vo_planes = plane_out_.vo;
   if (!ok) plane_vo_.reset();  // a frame without planes breaks the chain
   result->planes = ok ? plane_out_.planes : 0;
   result->planes_us = timer.elapsedUs();
+}
+
+// Stage 2's workspace filter. When it would remove nearly all of the cloud, the view is outside what
+// stage 1 mapped (not a cloud of fish and streaks): the unfiltered cloud is used and the pair counted.
+bool VisionPipeline::filterByMap(const VisionContext& context) {
+  if (!context.has_pose) return false;
+  const int before = cloud_.countValid();
+  cloud_.p_point_in_cam_m.copyTo(unfiltered_.p_point_in_cam_m);
+  const int removed = workspace_.filter(context.T_odom_cam, context.panel_fixed, context.T_odom_panel, &cloud_);
+  if (removed < 0) return false;
+  if (before > 0 && before - removed < config_.map_min_kept_fraction * before) {
+    unfiltered_.p_point_in_cam_m.copyTo(cloud_.p_point_in_cam_m);
+    ++outside_map_pairs_;
+  }
+  return true;
 }
 
 void VisionPipeline::runStage2(const StereoFrame& frame, const VisionContext& context, VisionResult* result) {

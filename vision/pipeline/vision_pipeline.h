@@ -33,6 +33,8 @@ struct VisionPipelineConfig {
   ModalityConfig modality;
   StereoCloudConfig dense;       // dense stereo of the map and the plane VO
   bool filter_with_map = true;   // stage 2: the plane VO's cloud keeps only points near the map
+  // ... unless fewer than this fraction would be kept: the view is then outside the mapped workspace.
+  double map_min_kept_fraction = 0.3;
   PlaneOdometryConfig planes;
   WorkspaceBuildConfig workspace;
   VisionClockUs clock_us = nullptr;  // per-part timing in VisionResult; nullptr: zeros
@@ -58,6 +60,8 @@ class VisionPipeline {
   StereoCloud& dense() { return dense_; }  // tools: one pair through the dense chain
   const OrganizedCloud& lastCloud() const { return cloud_; }
   const PlaneOdometry& planeOdometry() const { return plane_vo_; }
+  // Stage-2 pairs whose view lay outside the mapped workspace (filter skipped).
+  std::uint64_t outsideMapPairs() const { return outside_map_pairs_; }
 
  private:
   void detectMarkers(const StereoFrame& frame, VisionResult* result);
@@ -65,6 +69,7 @@ class VisionPipeline {
   void buildWorkspace(const StereoFrame& frame, const VisionContext& context, VisionResult* result);
   void runStage2(const StereoFrame& frame, const VisionContext& context, VisionResult* result);
   void runPlanes(const StereoFrame& frame, const VisionContext& context, VisionResult* result);
+  bool filterByMap(const VisionContext& context);
 
   VisionPipelineConfig config_{};
   MdmWorkspace mdm_ws_{};
@@ -75,10 +80,12 @@ class VisionPipeline {
   ModalitySelector selector_;
   StereoCloud dense_;
   OrganizedCloud cloud_;
+  OrganizedCloud unfiltered_;  // the cloud before the map filter (same grid)
   PlaneOdometry plane_vo_;
   PlaneOdometryOutput plane_out_;
   WorkspaceModel workspace_;
   std::uint64_t frames_seen_ = 0;
+  std::uint64_t outside_map_pairs_ = 0;
 };
 
 }  // namespace deepnav

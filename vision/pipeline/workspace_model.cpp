@@ -23,8 +23,7 @@ bool WorkspaceModel::insert(const OrganizedCloud& cloud, const Eigen::Isometry3d
   return true;
 }
 
-int WorkspaceModel::filter(const Eigen::Isometry3d& T_odom_cam, bool panel_fixed,
-                           const Eigen::Isometry3d& T_odom_panel, OrganizedCloud* cloud) {
+int WorkspaceModel::filterInMapFrame(const Eigen::Isometry3d& T_map_cam, OrganizedCloud* cloud) {
   if (!map_.frozen()) {
     if (freeze_failed_) return -1;
     if (!map_.freeze()) {
@@ -32,10 +31,15 @@ int WorkspaceModel::filter(const Eigen::Isometry3d& T_odom_cam, bool panel_fixed
       return -1;
     }
   }
-  if (!restored_) return map_.filter(T_odom_cam, cloud);
+  return map_.filter(T_map_cam, cloud);
+}
+
+int WorkspaceModel::filter(const Eigen::Isometry3d& T_odom_cam, bool panel_fixed,
+                           const Eigen::Isometry3d& T_odom_panel, OrganizedCloud* cloud) {
+  if (!restored_) return filterInMapFrame(T_odom_cam, cloud);
   if (!panel_fixed) return -1;
   // T_map_cam = T_map_panel T_panel_odom T_odom_cam.
-  return map_.filter(T_panel_map_.inverse() * T_odom_panel.inverse() * T_odom_cam, cloud);
+  return filterInMapFrame(T_panel_map_.inverse() * T_odom_panel.inverse() * T_odom_cam, cloud);
 }
 
 bool WorkspaceModel::save(std::ostream& octree_out, const Eigen::Isometry3d& T_odom_panel,

@@ -37,6 +37,9 @@ class WorkspaceModel {
   int filter(const Eigen::Isometry3d& T_odom_cam, bool panel_fixed, const Eigen::Isometry3d& T_odom_panel,
              OrganizedCloud* cloud);
 
+  // The same with the camera pose given in the map's own frame (tools: the map of the same dive).
+  int filterInMapFrame(const Eigen::Isometry3d& T_map_cam, OrganizedCloud* cloud);
+
   // Saved workspace: the octree (.bt stream) and T_panel_map. save() needs the panel pose of this run
   // when the map was built here.
   bool save(std::ostream& octree_out, const Eigen::Isometry3d& T_odom_panel, Eigen::Isometry3d* T_panel_map) const;

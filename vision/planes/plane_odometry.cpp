@@ -29,18 +29,27 @@ bool PlaneOdometry::process(TimeUs t_us, const OrganizedCloud& cloud, PlaneOdome
   previous_t_us_ = t_us;
   if (!chained || out->planes == 0) return false;
   // Planes of a are the previous frame's, planes of b this frame's: the motion of b in a.
-  if (!registrar_.registerPlanes(sets_[previous], sets_[next], &out->registration) || !out->registration.valid) {
-    return false;
-  }
+  const PlaneRegistrationResult& reg = out->registration;
+  if (!registrar_.registerPlanes(sets_[previous], sets_[next], &out->registration)) return false;
+  const bool partial = config_.use_partial && reg.status == PlaneRegistrationStatus::kRotationUnobservable &&
+                       reg.matched_planes >= 1;
+  if (!reg.valid && !partial) return false;
   VoMeasurement& vo = out->vo;
   vo.valid = true;
   vo.source = VoSource::kPlanes;
   vo.t_reference_us = reference_us;
-  vo.q_cama_camb = out->registration.q_cama_camb;
-  vo.p_camb_in_cama_m = out->registration.p_camb_in_cama_m;
-  vo.has_translation = out->registration.has_translation;
-  vo.cov = out->registration.cov;
-  vo.support = out->registration.matched_planes;
+  vo.q_cama_camb = reg.q_cama_camb;
+  if (partial) {
+    // Parallel planes fix the rotation but for the turn about their normal, which the q-method leaves
+    // arbitrary (its variance there is the unobservable one): take the smallest rotation taking the
+    // normal of b onto that of a, so the EKF linearises about a small angle.
+    const PlaneMatch& m = reg.matches[0];
+    vo.q_cama_camb = Eigen::Quaterniond::FromTwoVectors(sets_[next][m.b].n_in_cam, sets_[previous][m.a].n_in_cam);
+  }
+  vo.p_camb_in_cama_m = reg.p_camb_in_cama_m;
+  vo.has_translation = reg.has_translation;
+  vo.cov = reg.cov;
+  vo.support = reg.matched_planes;
   return true;
 }
 
