@@ -180,7 +180,7 @@ const std::array kBoardParams = {
       "dense stereo of the workspace map and the plane VO", DEEPNAV_FIELD(vision.dense_method)},
     P{"vision.dense_scale_down", ParamType::kInt, "-", 1, 2, "2", "",
       "images reduced by this factor before dense matching", DEEPNAV_FIELD(vision.dense_scale_down)},
-    P{"vision.dense_disparities", ParamType::kInt, "px", 16, 256, "96", "",
+    P{"vision.dense_disparities", ParamType::kInt, "px", 16, 256, "128", "",
       "dense disparity search range at the reduced size", DEEPNAV_FIELD(vision.dense_disparities)},
     P{"vision.filter_with_map", ParamType::kBool, "-", 0, 0, "true", "",
       "stage 2: keep only cloud points near the stage-1 workspace map", DEEPNAV_FIELD(vision.filter_with_map)},
