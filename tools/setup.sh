@@ -12,6 +12,7 @@ packages=(
   libnanoflann-dev libceres-dev
   clang-14 libclang-rt-14-dev
   python3 python3-numpy python3-matplotlib
+  qemu-system-x86 busybox-static linux-image-amd64
 )
 # Node.js runs the independent MCAP reader in the tests; a machine that already has node
 # (e.g. from NodeSource, whose nodejs conflicts with Debian's npm) keeps its own.
