@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <thread>
 
+#include "board/config/sensor_driver_configs.h"
 #include "board/service/status_text.h"
 #include "drivers/clock/monotonic_clock.h"
 #include "drivers/realtime/realtime.h"
@@ -67,12 +68,7 @@ bool DeepnavService::init(const ServiceOptions& options, std::string* error) {
   notifier_.send("STATUS=validating " + options.board_path);
   if (!loadVehicleSetup(options.board_path, &setup_, error)) return false;
   if (!validateBoard(setup_, options.board_path, options.replay_path, &board_, error)) return false;
-  if (board_.has_devices) {
-    // The live drivers (drivers/camera, can, serial, modbus) are not wired into the service yet: a
-    // device board validates but cannot run.
-    if (error) *error = options.board_path + ": sources: the devices answer, but the service does not run live drivers yet";
-    return false;
-  }
+  live_ = board_.has_devices;
   const BoardConfig& c = setup_.config;
   if (board_.has_process_cpus && !setThreadCpus(board_.process_cpus, error)) {
     if (error) *error = "realtime.process_cpus: " + *error;
@@ -86,7 +82,7 @@ bool DeepnavService::init(const ServiceOptions& options, std::string* error) {
   // Outputs first: a busy port fails the start before a recording file is created.
   loop_ = std::make_unique<LiveLoop>();
   if (!publisher_.start(c.outputs, loop_.get(), error)) return false;
-  if (!source_.open(board_.replay_path, error)) return false;
+  if (live_ ? !openLiveDrivers(error) : !source_.open(board_.replay_path, error)) return false;
   if (!loop_->init(setup_, recording_path_, error)) return false;
   publisher_.chain(options.tick_observer);
   loop_->setTickObserver(&publisher_);
@@ -107,8 +103,31 @@ void DeepnavService::applyLoopThreadSettings(const char* thread) {
   loop_thread_state_.store(loop_thread_error_.empty() ? 1 : -1, std::memory_order_release);
 }
 
+// Live sources: the sensor drivers the board lists (serial DVL/AHRS, CAN, Modbus depth) and the stereo
+// cameras; devices are opened here, before any thread starts, so a device that went away since the
+// validation fails the start with its name.
+bool DeepnavService::openLiveDrivers(std::string* error) {
+  const BoardConfig& c = setup_.config;
+  if (!sensorThreadsConfig(c, &sensor_config_, error)) return false;
+  if (c.camera.source.driver.empty() || c.camera.source.driver == "none") return true;
+  CameraSourceConfig camera = c.camera.source;
+  camera.width_px = c.camera.width_px;
+  camera.height_px = c.camera.height_px;
+  camera.channels = c.camera.channels;
+  camera.rate_hz = c.camera.rate_hz;
+  cameras_ = makeCameraSource(camera, error);
+  return cameras_ && cameras_->open(error);
+}
+
+bool DeepnavService::startLiveDrivers(std::string* error) {
+  if (!sensors_.start(sensor_config_, &loop_->inputs(), error)) return false;
+  return !cameras_ || cameras_->start(&loop_->inputs().pool, &loop_->inputs().frames, error);
+}
+
 bool DeepnavService::startThreads(std::string* error) {
-  const TimeUs offset = source_.firstTimeUs() - (monotonicUs() + kStartDelayUs);
+  // Live: the loop's clock is the monotonic clock the drivers stamp with. Replay: the recording's clock
+  // mapped onto now.
+  const TimeUs offset = live_ ? 0 : source_.firstTimeUs() - (monotonicUs() + kStartDelayUs);
   if (!loop_->start(offset, error)) return false;
   running_ = true;
   const TimeUs deadline = monotonicUs() + kThreadStartTimeoutUs;
@@ -119,6 +138,7 @@ bool DeepnavService::startThreads(std::string* error) {
     if (error) *error = loop_thread_error_.empty() ? "loop: the nav thread did not start" : loop_thread_error_;
     return false;
   }
+  if (live_) return startLiveDrivers(error);
   source_.start(&loop_->inputs(), offset);
   return true;
 }
@@ -142,9 +162,10 @@ bool DeepnavService::run(StopSignals* signals, std::string* error) {
     shutdown(&ignored);
     return false;
   }
-  notifier_.send("READY=1\nSTATUS=running: " + board_.replay_path);
-  std::fprintf(stderr, "deepnav run: running (board %s, replay %s, recording %s, watchdog %s)\n",
-               options_.board_path.c_str(), board_.replay_path.c_str(),
+  const std::string sources = live_ ? std::string("live devices") : board_.replay_path;
+  notifier_.send("READY=1\nSTATUS=running: " + sources);
+  std::fprintf(stderr, "deepnav run: running (board %s, sources %s, recording %s, watchdog %s)\n",
+               options_.board_path.c_str(), sources.c_str(),
                recording_path_.empty() ? "off" : recording_path_.c_str(),
                watchdog_us_ > 0 ? (std::to_string(watchdog_us_ / 1000) + " ms").c_str() : "off");
   const TimeUs window_us = watchdog_us_ > 0 ? std::min(kHealthWindowUs, watchdog_us_ / 2) : kHealthWindowUs;
@@ -172,7 +193,7 @@ bool DeepnavService::run(StopSignals* signals, std::string* error) {
       stop_reason_ = "duration";
       break;
     }
-    if (source_.finished() && source_done_us == 0) source_done_us = t;
+    if (!live_ && source_.finished() && source_done_us == 0) source_done_us = t;
     if (source_done_us > 0 && t - source_done_us >= kDrainUs) {
       stop_reason_ = "end of replay";
       break;
@@ -205,6 +226,8 @@ void DeepnavService::shutdown(std::string* error) {
   running_ = false;
   // The loop first: its last ticks still have their inputs, and the recording closes as soon as possible.
   std::string why;
+  if (cameras_) cameras_->stop();
+  sensors_.stop();
   const bool closed = loop_->stop(&why);
   source_.stop();
   publisher_.stop();

@@ -8,7 +8,9 @@
 #include "board/service/board_validation.h"
 #include "board/service/health_monitor.h"
 #include "board/service/output_publisher.h"
+#include "drivers/camera/camera_source.h"
 #include "drivers/replay/replay_source.h"
+#include "drivers/sensor_io/sensor_threads.h"
 #include "drivers/systemd/notifier.h"
 #include "drivers/systemd/stop_signals.h"
 
@@ -49,6 +51,8 @@ class DeepnavService {
 
  private:
   bool startThreads(std::string* error);
+  bool openLiveDrivers(std::string* error);
+  bool startLiveDrivers(std::string* error);
   void applyLoopThreadSettings(const char* thread);
   void evaluateHealth(bool* healthy);
   void shutdown(std::string* error);
@@ -59,6 +63,10 @@ class DeepnavService {
   std::string recording_path_;
   std::unique_ptr<LiveLoop> loop_;
   ReplaySource source_;
+  bool live_ = false;                       // the board's devices are the sources (else a replay)
+  std::unique_ptr<CameraSource> cameras_;   // live stereo pair, when camera.driver is not none
+  SensorThreadsConfig sensor_config_;
+  SensorThreads sensors_;
   OutputPublisher publisher_;
   HealthMonitor health_;
   SystemdNotifier notifier_;

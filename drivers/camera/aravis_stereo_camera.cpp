@@ -27,17 +27,17 @@ ArvPixelFormat arvPixelFormat(PixelFormat f) {
   return ARV_PIXEL_FORMAT_MONO_8;
 }
 
-FrameStatus frameStatusOf(ArvBufferStatus s) {
+CameraFrameStatus frameStatusOf(ArvBufferStatus s) {
   switch (s) {
-    case ARV_BUFFER_STATUS_SUCCESS: return FrameStatus::kOk;
-    case ARV_BUFFER_STATUS_CLEARED: return FrameStatus::kCleared;
-    case ARV_BUFFER_STATUS_TIMEOUT: return FrameStatus::kTimeout;
-    case ARV_BUFFER_STATUS_MISSING_PACKETS: return FrameStatus::kMissingPackets;
-    case ARV_BUFFER_STATUS_WRONG_PACKET_ID: return FrameStatus::kWrongPacketId;
-    case ARV_BUFFER_STATUS_SIZE_MISMATCH: return FrameStatus::kSizeMismatch;
-    case ARV_BUFFER_STATUS_FILLING: return FrameStatus::kFilling;
-    case ARV_BUFFER_STATUS_ABORTED: return FrameStatus::kAborted;
-    default: return FrameStatus::kUnknown;
+    case ARV_BUFFER_STATUS_SUCCESS: return CameraFrameStatus::kOk;
+    case ARV_BUFFER_STATUS_CLEARED: return CameraFrameStatus::kCleared;
+    case ARV_BUFFER_STATUS_TIMEOUT: return CameraFrameStatus::kTimeout;
+    case ARV_BUFFER_STATUS_MISSING_PACKETS: return CameraFrameStatus::kMissingPackets;
+    case ARV_BUFFER_STATUS_WRONG_PACKET_ID: return CameraFrameStatus::kWrongPacketId;
+    case ARV_BUFFER_STATUS_SIZE_MISMATCH: return CameraFrameStatus::kSizeMismatch;
+    case ARV_BUFFER_STATUS_FILLING: return CameraFrameStatus::kFilling;
+    case ARV_BUFFER_STATUS_ABORTED: return CameraFrameStatus::kAborted;
+    default: return CameraFrameStatus::kUnknown;
   }
 }
 
@@ -351,25 +351,25 @@ void AravisStereoCamera::drain(Side& s) {
 
 void AravisStereoCamera::handleBuffer(Side& s, ArvBuffer* buffer) {
   auto& counters = counters_.side(s.index);
-  FrameStatus status = frameStatusOf(arv_buffer_get_status(buffer));
-  if (status == FrameStatus::kOk && arv_buffer_get_payload_type(buffer) != ARV_BUFFER_PAYLOAD_TYPE_IMAGE) {
-    status = FrameStatus::kPayloadNotSupported;
+  CameraFrameStatus status = frameStatusOf(arv_buffer_get_status(buffer));
+  if (status == CameraFrameStatus::kOk && arv_buffer_get_payload_type(buffer) != ARV_BUFFER_PAYLOAD_TYPE_IMAGE) {
+    status = CameraFrameStatus::kPayloadNotSupported;
   }
-  if (status == FrameStatus::kOk &&
+  if (status == CameraFrameStatus::kOk &&
       (arv_buffer_get_image_width(buffer) != config_.width_px ||
        arv_buffer_get_image_height(buffer) != config_.height_px ||
        arv_buffer_get_image_pixel_format(buffer) != arvPixelFormat(format_))) {
-    status = FrameStatus::kWrongFormat;
+    status = CameraFrameStatus::kWrongFormat;
   }
   int slot = -1;
-  for (int i = 0; i < kHeld && status == FrameStatus::kOk; ++i) {
+  for (int i = 0; i < kHeld && status == CameraFrameStatus::kOk; ++i) {
     if (s.held[static_cast<std::size_t>(i)].buffer == nullptr) {
       slot = i;
       break;
     }
   }
   counters.count(status);
-  if (status != FrameStatus::kOk || slot < 0) {
+  if (status != CameraFrameStatus::kOk || slot < 0) {
     arv_stream_push_buffer(s.stream, buffer);  // never passed on: straight back to the camera's stream
     return;
   }

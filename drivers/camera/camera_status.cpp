@@ -4,21 +4,21 @@
 
 namespace deepnav {
 
-const char* frameStatusName(FrameStatus status) {
+const char* frameStatusName(CameraFrameStatus status) {
   switch (status) {
-    case FrameStatus::kOk: return "ok";
-    case FrameStatus::kCleared: return "cleared";
-    case FrameStatus::kTimeout: return "timeout";
-    case FrameStatus::kMissingPackets: return "missing_packets";
-    case FrameStatus::kWrongPacketId: return "wrong_packet_id";
-    case FrameStatus::kSizeMismatch: return "size_mismatch";
-    case FrameStatus::kFilling: return "filling";
-    case FrameStatus::kAborted: return "aborted";
-    case FrameStatus::kPayloadNotSupported: return "payload_not_supported";
-    case FrameStatus::kUnknown: return "unknown";
-    case FrameStatus::kWrongFormat: return "wrong_format";
-    case FrameStatus::kDeviceError: return "device_error";
-    case FrameStatus::kCount: break;
+    case CameraFrameStatus::kOk: return "ok";
+    case CameraFrameStatus::kCleared: return "cleared";
+    case CameraFrameStatus::kTimeout: return "timeout";
+    case CameraFrameStatus::kMissingPackets: return "missing_packets";
+    case CameraFrameStatus::kWrongPacketId: return "wrong_packet_id";
+    case CameraFrameStatus::kSizeMismatch: return "size_mismatch";
+    case CameraFrameStatus::kFilling: return "filling";
+    case CameraFrameStatus::kAborted: return "aborted";
+    case CameraFrameStatus::kPayloadNotSupported: return "payload_not_supported";
+    case CameraFrameStatus::kUnknown: return "unknown";
+    case CameraFrameStatus::kWrongFormat: return "wrong_format";
+    case CameraFrameStatus::kDeviceError: return "device_error";
+    case CameraFrameStatus::kCount: break;
   }
   return "invalid";
 }
@@ -54,7 +54,7 @@ void sideJson(std::ostringstream& o, const CameraSideStatus& s) {
   bool first = true;
   for (std::size_t i = 0; i < kFrameStatusCount; ++i) {
     if (s.frames[i] == 0 && i != 0) continue;
-    o << (first ? "" : ",") << '"' << frameStatusName(static_cast<FrameStatus>(i)) << "\":" << s.frames[i];
+    o << (first ? "" : ",") << '"' << frameStatusName(static_cast<CameraFrameStatus>(i)) << "\":" << s.frames[i];
     first = false;
   }
   o << "}}";

@@ -11,7 +11,7 @@ namespace deepnav {
 
 // Why a frame from one camera was or was not passed on. The first block mirrors Aravis's buffer
 // statuses (ArvBufferStatus); the rest are the driver's own checks. Only kOk frames reach the pairing.
-enum class FrameStatus : int {
+enum class CameraFrameStatus : int {
   kOk = 0,
   kCleared,             // buffer emptied before use
   kTimeout,             // frame not completed in time
@@ -26,13 +26,13 @@ enum class FrameStatus : int {
   kDeviceError,         // V4L2: the driver flagged the buffer (V4L2_BUF_FLAG_ERROR)
   kCount
 };
-constexpr std::size_t kFrameStatusCount = static_cast<std::size_t>(FrameStatus::kCount);
+constexpr std::size_t kFrameStatusCount = static_cast<std::size_t>(CameraFrameStatus::kCount);
 
-const char* frameStatusName(FrameStatus status);
+const char* frameStatusName(CameraFrameStatus status);
 
 // A snapshot of one camera's counters.
 struct CameraSideStatus {
-  std::array<std::uint64_t, kFrameStatusCount> frames{};  // per FrameStatus
+  std::array<std::uint64_t, kFrameStatusCount> frames{};  // per CameraFrameStatus
   bool connected = false;
   bool stale = false;            // no good frame for camera.stale_after_s
   std::uint64_t stale_events = 0;
@@ -71,7 +71,7 @@ class CameraCounters {
     std::atomic<std::uint64_t> triggers{0};
     std::atomic<TimeUs> last_good_frame_us{0};
 
-    void count(FrameStatus s) {
+    void count(CameraFrameStatus s) {
       frames[static_cast<std::size_t>(s)].fetch_add(1, std::memory_order_relaxed);
     }
   };

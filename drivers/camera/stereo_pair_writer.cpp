@@ -13,7 +13,7 @@ bool StereoPairWriter::write(const RawImage& left, const RawImage& right, TimeUs
   if (!convertRawImage(left, f.left) || !convertRawImage(right, f.right)) {
     // The drivers check size and format before pairing; reaching here means a driver bug.
     pool_->release(slot);
-    counters_->left.count(FrameStatus::kWrongFormat);
+    counters_->left.count(CameraFrameStatus::kWrongFormat);
     return false;
   }
   f.t_us = t_us;

@@ -106,15 +106,15 @@ void V4l2StereoCamera::drain(Side& s) {
       s.failed = true;  // unplugged or broken: checkHealth() reopens it
       return;
     }
-    FrameStatus status = f.error ? FrameStatus::kDeviceError : FrameStatus::kOk;
+    CameraFrameStatus status = f.error ? CameraFrameStatus::kDeviceError : CameraFrameStatus::kOk;
     const std::size_t row = static_cast<std::size_t>(f.image.width_px) *
                             static_cast<std::size_t>(bytesPerPixelTimes2(f.image.format)) / 2;
-    if (status == FrameStatus::kOk &&
+    if (status == CameraFrameStatus::kOk &&
         f.image.size_bytes < f.image.stride_bytes * static_cast<std::size_t>(f.image.height_px - 1) + row) {
-      status = FrameStatus::kSizeMismatch;
+      status = CameraFrameStatus::kSizeMismatch;
     }
     counters.count(status);
-    if (status != FrameStatus::kOk) {
+    if (status != CameraFrameStatus::kOk) {
       s.capture.requeue(f.index);
       continue;
     }

@@ -313,8 +313,8 @@ TEST_F(AravisStereoTest, LostPacketsAreCountedAndTheirFramesNeverPassedOn) {
   const CameraStatus s = camera.status();
 
   // THEN incomplete frames are counted per status on both cameras, and every pair handed on is intact
-  const auto missing = static_cast<std::size_t>(FrameStatus::kMissingPackets);
-  const auto timeout = static_cast<std::size_t>(FrameStatus::kTimeout);
+  const auto missing = static_cast<std::size_t>(CameraFrameStatus::kMissingPackets);
+  const auto timeout = static_cast<std::size_t>(CameraFrameStatus::kTimeout);
   EXPECT_GT(s.left.frames[missing] + s.left.frames[timeout], 0u) << cameraStatusJson(s);
   EXPECT_GT(s.right.frames[missing] + s.right.frames[timeout], 0u) << cameraStatusJson(s);
   EXPECT_GT(check.pairs, 0) << cameraStatusJson(s);
