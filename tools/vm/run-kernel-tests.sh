@@ -128,10 +128,25 @@ mount -t sysfs sys /host/sys
 mount -t devtmpfs dev /host/dev
 mount -t tmpfs tmp /host/tmp
 mount -t tmpfs run /host/run
+# The test binaries' folders as their own shares, at their host paths: a build under /tmp (hidden by the
+# tmpfs above) or on another file system is then visible in the chroot too.
+while read -r tag dir; do
+  mkdir -p "/host$dir" 2>/dev/null
+  mount -t 9p -o trans=virtio,version=9p2000.L,ro,cache=loose "$tag" "/host$dir" || echo "vm: cannot mount $dir"
+done </testdirs
 chroot /host /bin/sh -s </run-tests.sh
 poweroff -f
 EOF
 chmod +x "$ird/init"
+# One 9p share per folder holding a test binary (mounted by /init at the same path).
+share_args=()
+: >"$ird/testdirs"
+i=0
+for d in $(for t in "${tests[@]}"; do dirname "$t"; done | sort -u); do
+  echo "tests$i $d" >>"$ird/testdirs"
+  share_args+=(-virtfs "local,path=$d,mount_tag=tests$i,security_model=none,readonly=on,id=tests$i")
+  i=$((i + 1))
+done
 (cd "$ird" && find . | cpio -o -H newc --quiet) >"$work/initramfs.cpio"
 
 # --- boot -----------------------------------------------------------------------------------------------
@@ -144,6 +159,7 @@ timeout "$timeout_s" qemu-system-x86_64 \
   -kernel "/boot/vmlinuz-$kver" -initrd "$work/initramfs.cpio" \
   -append "console=ttyS0 panic=-1 quiet loglevel=3 rdinit=/init" \
   -virtfs local,path=/,mount_tag=hostroot,security_model=none,readonly=on,multidevs=remap,id=hostroot \
+  "${share_args[@]}" \
   -nographic -no-reboot -monitor none -serial "file:$log" -display none \
   -nic none
 qemu_rc=$?
