@@ -182,13 +182,27 @@ bool applyParams(const std::vector<ParamSpecView>& params, const YAML::Node& roo
   return true;
 }
 
+namespace {
+
+// A Markdown table cell: a '|' of the text (the choices "zstd|lz4|none") would end the cell.
+std::string markdownCell(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '|') out += '\\';
+    out += c;
+  }
+  return out;
+}
+
+}  // namespace
+
 std::string describeParams(const std::vector<ParamSpecView>& params) {
   std::ostringstream s;
   s << "| key | type | unit | default | allowed | meaning |\n|---|---|---|---|---|---|\n";
   for (const auto& p : params) {
     static const char* kTypes[] = {"bool", "int", "double", "string", "choice", "vec3", "rotation", "duration"};
     s << "| `" << p.key << "` | " << kTypes[static_cast<int>(p.type)] << " | " << p.unit << " | `"
-      << p.default_text << "` | " << rangeText(p) << " | " << p.doc << " |\n";
+      << p.default_text << "` | " << markdownCell(rangeText(p)) << " | " << markdownCell(p.doc) << " |\n";
   }
   return s.str();
 }
