@@ -58,7 +58,7 @@ echo
 cat out/tl2.log | sed -n '2,20p'
 
 echo "== figures: a stereo pair of the dive, its disparity, cloud planes, the stage-1 octomap"
-build/bin/deepnav-figures out/default.mcap --time-s 75 --workspace out/tl2/workspace --out out/figures
+build/bin/deepnav-figures out/default.mcap --time-s 56 --workspace out/tl2/workspace --out out/figures
 
 echo "== tables"
 /usr/bin/python3 tools/eval/paper_tables.py --run tl1=out/tl1 --run tl2=out/tl2 --run tl3=out/tl3 --run all=out/all \
