@@ -1,59 +1,15 @@
 // After warm-up, the steady-state nav loop performs no heap allocation. Every allocation made on the
 // test thread is counted by replacing operator new and, outside sanitizer builds, malloc itself.
-#include <atomic>
-#include <cstdlib>
-#include <new>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "board/config/vehicle_setup.h"
 #include "board/loop/live_loop.h"
+#include "tests/support/alloc_counter.h"
 #include "tools/sim/scenario_loader.h"
 #include "tools/sim/sensor_simulator.h"
 #include "vision/pipeline/vision_pipeline.h"
-
-namespace {
-thread_local bool t_counting = false;
-std::atomic<long> g_allocations{0};
-void noteAllocation() {
-  if (t_counting) g_allocations.fetch_add(1, std::memory_order_relaxed);
-}
-}  // namespace
-
-#if !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
-extern "C" void* __libc_malloc(size_t);
-extern "C" void* __libc_calloc(size_t, size_t);
-extern "C" void* __libc_realloc(void*, size_t);
-extern "C" void* malloc(size_t n) {
-  noteAllocation();
-  return __libc_malloc(n);
-}
-extern "C" void* calloc(size_t n, size_t m) {
-  noteAllocation();
-  return __libc_calloc(n, m);
-}
-extern "C" void* realloc(void* p, size_t n) {
-  noteAllocation();
-  return __libc_realloc(p, n);
-}
-#endif
-
-void* operator new(std::size_t n) {
-  noteAllocation();
-  if (void* p = std::malloc(n ? n : 1)) return p;
-  throw std::bad_alloc();
-}
-void* operator new[](std::size_t n) { return operator new(n); }
-void* operator new(std::size_t n, const std::nothrow_t&) noexcept {
-  noteAllocation();
-  return std::malloc(n ? n : 1);
-}
-void* operator new[](std::size_t n, const std::nothrow_t& t) noexcept { return operator new(n, t); }
-void operator delete(void* p) noexcept { std::free(p); }
-void operator delete[](void* p) noexcept { std::free(p); }
-void operator delete(void* p, std::size_t) noexcept { std::free(p); }
-void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
 
 namespace deepnav {
 namespace {
