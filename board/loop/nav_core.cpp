@@ -37,7 +37,7 @@ bool NavCore::init(const VehicleSetup& setup, RecordSink* sink, std::string* err
   workspace_restored_ = false;
   const BoardConfig& c = setup.config;
   fuse_markers_in_stage2_ = c.stage.fuse_markers_in_stage2;
-  // One clone less than the EKF holds: the new pair's clone is taken after the oldest is released.
+  // As many pair clones as the EKF holds: when full, the oldest is released before the new pair is cloned.
   vo_.init(robotFromCamera(c), c.ekf.max_clones);
   smoother_.init(c.loop.output_tau_s);
   StageConfig stage;
