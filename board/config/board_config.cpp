@@ -231,6 +231,11 @@ const std::array kBoardParams = {
     P{"service.recording_dir", ParamType::kString, "path", 0, 0, "recordings", "",
       "`deepnav run` records to DIR/deepnav-<UTC time>.mcap (relative to the working directory); empty: no recording",
       DEEPNAV_FIELD(service.recording_dir)},
+    P{"service.state_dir", ParamType::kString, "path", 0, 0, "''", "",
+      "`deepnav run` saves the workspace (map and T_panel_map) to DIR/workspace when stage 2 is entered and "
+      "reloads it at start-up, to resume in stage 2 once the markers fix the panel (relative to the working "
+      "directory); empty: not kept",
+      DEEPNAV_FIELD(service.state_dir)},
     P{"realtime.loop_priority", ParamType::kInt, "-", 0, 99, "0", "",
       "SCHED_FIFO priority of the nav loop thread; 0: normal scheduling", DEEPNAV_FIELD(realtime.loop_priority)},
     P{"realtime.loop_cpus", ParamType::kString, "CPU list", 0, 0, "''", "",

@@ -115,6 +115,7 @@ struct BoardConfig {
   } outputs;
   struct Service {
     std::string recording_dir;    // where `deepnav run` writes its recording; empty: no recording
+    std::string state_dir;        // where `deepnav run` keeps its workspace across restarts; empty: none
   } service;
   struct Realtime {
     int loop_priority;            // SCHED_FIFO priority of the nav loop thread; 0: normal scheduling

@@ -38,7 +38,7 @@ bool LiveLoop::init(const VehicleSetup& setup, const std::string& recording_path
     if (error) *error = "loop: cannot allocate the nav-to-vision feedback ring";
     return false;
   }
-  vision_context_.init(robotFromCamera(c));
+  vision_context_.init(robotFromCamera(setup));
   recording_ = !recording_path.empty() && c.recording.enabled;
   sink_ = nullptr;
   if (recording_) {
@@ -52,12 +52,12 @@ bool LiveLoop::init(const VehicleSetup& setup, const std::string& recording_path
   return core_.init(setup, sink_, error);
 }
 
-bool LiveLoop::start(TimeUs clock_offset_us, std::string* error) {
+bool LiveLoop::start(const LoopClock& clock, std::string* error) {
   if (running_.load()) {
     if (error) *error = "loop: already running";
     return false;
   }
-  clock_offset_us_ = clock_offset_us;
+  clock_ = clock;
   running_.store(true, std::memory_order_release);
   vision_thread_ = std::thread([this] { visionThread(); });
   loop_thread_ = std::thread([this] { loopThread(); });
@@ -135,17 +135,17 @@ std::uint64_t LiveLoop::inputsRefused() const {
 void LiveLoop::loopThread() {
   if (thread_hook_) thread_hook_("nav");
   const TimeUs period = scheduler_.periodUs();
-  TimeUs next_us = ((monotonicUs() + clock_offset_us_) / period + 1) * period;
+  TimeUs next_us = (clock_.toLoop(monotonicUs()) / period + 1) * period;
   for (std::uint64_t tick = 0; running_.load(std::memory_order_acquire); ++tick) {
-    sleepUntilUs(next_us - clock_offset_us_);
+    sleepUntilUs(clock_.toMono(next_us));
     const TimeUs start = monotonicUs();
-    scheduler_.recordTickStart(next_us, start + clock_offset_us_);
+    scheduler_.recordTickStart(next_us, clock_.toLoop(start));
     runTick(next_us);
     scheduler_.recordRun(nav_task_, monotonicUs() - start);
     if (scheduler_.due(stats_task_, tick) && recording_) recorder_.recordLoopStats(next_us, scheduler_.stats());
     next_us += period;
     // After an overrun, skip the ticks that are already past instead of bursting to catch up.
-    const TimeUs now = monotonicUs() + clock_offset_us_;
+    const TimeUs now = clock_.toLoop(monotonicUs());
     if (next_us < now) next_us += ((now - next_us) / period + 1) * period;
   }
 }
@@ -164,12 +164,14 @@ void LiveLoop::visionThread() {
     while (feedback_.tryPop(f)) vision_context_.push(f);
     VisionResult result;
     const TimeUs start = monotonicUs();
-    vision_.process(frame, vision_context_.contextAt(frame.t_us), &result);
+    const VisionContext context = vision_context_.contextAt(frame.t_us);
+    vision_.process(frame, context, &result);
     const TimeUs elapsed = monotonicUs() - start;
     result.processing_us = static_cast<std::uint32_t>(elapsed);
     scheduler_.recordRun(vision_task_, elapsed);
     inputs_.pool.release(index);
     vision_results_.push(result);
+    if (vision_hook_) vision_hook_(vision_.workspace(), context);
   }
 }
 

@@ -10,6 +10,7 @@
 #include "board/loop/nav_core.h"
 #include "board/loop/scheduler.h"
 #include "drivers/buffers/live_inputs.h"
+#include "drivers/clock/loop_clock.h"
 #include "drivers/recording/queued_recorder.h"
 #include "vision/pipeline/vision_pipeline.h"
 
@@ -43,10 +44,22 @@ class LiveLoop {
   // set its scheduling policy and CPU affinity.
   void setTickObserver(TickObserver* observer) { observer_ = observer; }
   void setThreadStartHook(std::function<void(const char* thread_name)> hook) { thread_hook_ = std::move(hook); }
+  // Set before start(): runs on the vision worker after each pair (its result already handed to the
+  // loop) with the workspace map and the pair's navigation context, e.g. to save the stage-1 map once
+  // stage 2 is entered (board/service/workspace_state.h). It may do a little file I/O: never on the loop.
+  void setVisionPairHook(std::function<void(const WorkspaceModel&, const VisionContext&)> hook) {
+    vision_hook_ = std::move(hook);
+  }
+  // Between init() and start(): the vision pipeline's workspace map (to restore a saved one into), and
+  // telling the stage machine a saved workspace was restored (stage 2 once the panel is fixed again).
+  WorkspaceModel& workspace() { return vision_.workspace(); }
+  void setWorkspaceRestored() { core_.setWorkspaceRestored(true); }
 
   // Starts the threads. The loop's clock is t_us = monotonicUs() + clock_offset_us (0 on the vehicle; a
   // replay maps the recording's clock onto now).
-  bool start(TimeUs clock_offset_us, std::string* error);
+  bool start(TimeUs clock_offset_us, std::string* error) { return start(LoopClock{clock_offset_us}, error); }
+  // The same on any mapping of the monotonic clock, e.g. a replay faster than real time (tools/soak).
+  bool start(const LoopClock& clock, std::string* error);
   // Stops the threads after the current tick, drains the recorder and closes the recording.
   bool stop(std::string* error);
 
@@ -79,7 +92,7 @@ class LiveLoop {
   VisionPipeline vision_;
   Scheduler scheduler_;
   int nav_task_ = -1, stats_task_ = -1, vision_task_ = -1;
-  TimeUs clock_offset_us_ = 0;
+  LoopClock clock_;
   std::atomic<bool> running_{false};
   std::thread loop_thread_, vision_thread_;
   mutable std::mutex latest_mutex_;  // guards latest_ and counters_ copies for readers off the loop
@@ -88,6 +101,7 @@ class LiveLoop {
   bool recording_ = false;
   TickObserver* observer_ = nullptr;
   std::function<void(const char*)> thread_hook_;
+  std::function<void(const WorkspaceModel&, const VisionContext&)> vision_hook_;
 };
 
 }  // namespace deepnav

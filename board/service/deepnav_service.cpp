@@ -84,6 +84,9 @@ bool DeepnavService::init(const ServiceOptions& options, std::string* error) {
   if (!publisher_.start(c.outputs, loop_.get(), error)) return false;
   if (live_ ? !openLiveDrivers(error) : !source_.open(board_.replay_path, error)) return false;
   if (!loop_->init(setup_, recording_path_, error)) return false;
+  if (!c.service.state_dir.empty() && !attachWorkspaceState(c.service.state_dir, loop_.get(), &workspace_saver_, error)) {
+    return false;
+  }
   publisher_.chain(options.tick_observer);
   loop_->setTickObserver(&publisher_);
   loop_->setThreadStartHook([this](const char* thread) { applyLoopThreadSettings(thread); });

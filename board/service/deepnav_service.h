@@ -8,6 +8,7 @@
 #include "board/service/board_validation.h"
 #include "board/service/health_monitor.h"
 #include "board/service/output_publisher.h"
+#include "board/service/workspace_state.h"
 #include "drivers/camera/camera_source.h"
 #include "drivers/replay/replay_source.h"
 #include "drivers/sensor_io/sensor_threads.h"
@@ -61,6 +62,7 @@ class DeepnavService {
   VehicleSetup setup_;
   ValidatedBoard board_;
   std::string recording_path_;
+  std::unique_ptr<WorkspaceSaver> workspace_saver_;  // service.state_dir (before loop_: outlives its threads)
   std::unique_ptr<LiveLoop> loop_;
   ReplaySource source_;
   bool live_ = false;                       // the board's devices are the sources (else a replay)

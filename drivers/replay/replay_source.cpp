@@ -25,9 +25,9 @@ bool ReplaySource::open(const std::string& path, std::string* error) {
   return ok && any;
 }
 
-void ReplaySource::start(LiveInputs* inputs, TimeUs clock_offset_us) {
+void ReplaySource::start(LiveInputs* inputs, const LoopClock& clock) {
   inputs_ = inputs;
-  clock_offset_us_ = clock_offset_us;
+  clock_ = clock;
   stop_.store(false);
   finished_.store(false);
   thread_ = std::thread([this] { run(); });
@@ -77,7 +77,7 @@ void ReplaySource::run() {
       [&](const ReplayEvent& e) {
         if (stop_.load(std::memory_order_acquire)) return false;
         if (e.kind == ReplayEvent::Kind::kSolution || e.kind == ReplayEvent::Kind::kTruth) return true;
-        sleepUntilUs(e.t_us - clock_offset_us_);
+        sleepUntilUs(clock_.toMono(e.t_us));
         if (push(e)) {
           pushed_.fetch_add(1, std::memory_order_relaxed);
         } else {

@@ -5,6 +5,7 @@
 #include <thread>
 
 #include "drivers/buffers/live_inputs.h"
+#include "drivers/clock/loop_clock.h"
 #include "drivers/replay/recording_reader.h"
 
 namespace deepnav {
@@ -26,7 +27,9 @@ class ReplaySource {
 
   // Plays from now on: sample time t is pushed at monotonic time t + clock_offset... i.e. at
   // wall = t - clock_offset_us (the loop uses the same offset to read the recording's clock).
-  void start(LiveInputs* inputs, TimeUs clock_offset_us);
+  void start(LiveInputs* inputs, TimeUs clock_offset_us) { start(inputs, LoopClock{clock_offset_us}); }
+  // The same on any mapping of the monotonic clock (the loop's own, e.g. faster than real time).
+  void start(LiveInputs* inputs, const LoopClock& clock);
   void stop();
   bool finished() const { return finished_.load(std::memory_order_acquire); }
 
@@ -41,7 +44,7 @@ class ReplaySource {
   std::string path_;
   RecordingReader reader_;
   LiveInputs* inputs_ = nullptr;
-  TimeUs clock_offset_us_ = 0;
+  LoopClock clock_;
   TimeUs first_us_ = 0;
   TimeUs last_us_ = 0;
   std::thread thread_;
