@@ -2,6 +2,8 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "board/config/text_file.h"
+
 namespace deepnav {
 namespace {
 
@@ -59,9 +61,19 @@ bool applyBoardOverrides(const std::vector<std::string>& overrides, VehicleSetup
   out << root;
   BoardConfig config;
   if (!loadBoardConfigText(out.c_str(), "board with overrides", &config, error)) return false;
+  // A calibration named on the command line is read from there (relative to the working directory): the
+  // setup's text belongs to the old name.
+  const std::string& calibration = config.camera.calibration_file;
+  if (calibration.empty()) {
+    setup->calibration_text.clear();
+  } else if (calibration != setup->config.camera.calibration_file &&
+             !readTextFile(calibration, "the stereo calibration (camera.calibration_file override)",
+                           &setup->calibration_text, error)) {
+    return false;
+  }
   setup->config = config;
   setup->board_text = out.c_str();
-  return true;
+  return buildSetupRectification("board with overrides", setup, error);
 }
 
 }  // namespace deepnav

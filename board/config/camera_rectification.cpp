@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "board/config/stereo_calibration_file.h"
+#include "board/config/text_file.h"
 
 namespace deepnav {
 
@@ -19,17 +20,14 @@ RectificationOptions rectificationOptions(const BoardConfig& config) {
   return o;
 }
 
-bool buildCameraRectification(const BoardConfig& config, const std::string& board_dir, StereoRectification* out,
-                              bool* needed, std::string* error) {
-  *needed = !config.camera.calibration_file.empty();
-  if (!*needed) return true;
-  const std::string path = (std::filesystem::path(board_dir) / config.camera.calibration_file).string();
+bool buildCameraRectificationFromText(const BoardConfig& config, const std::string& calibration_text,
+                                      const std::string& name, StereoRectification* out, std::string* error) {
   StereoCalibration calibration;
-  if (!readStereoCalibrationFile(path, &calibration, error)) return false;
+  if (!parseStereoCalibrationText(calibration_text, name, &calibration, error)) return false;
   if (calibration.image_size.width != config.camera.width_px ||
       calibration.image_size.height != config.camera.height_px) {
     if (error)
-      *error = path + ": calibrated for " + std::to_string(calibration.image_size.width) + " x " +
+      *error = name + ": calibrated for " + std::to_string(calibration.image_size.width) + " x " +
                std::to_string(calibration.image_size.height) + " px images, the board's camera gives " +
                std::to_string(config.camera.width_px) + " x " + std::to_string(config.camera.height_px) +
                " (camera.width_px, camera.height_px)";
@@ -37,10 +35,20 @@ bool buildCameraRectification(const BoardConfig& config, const std::string& boar
   }
   std::string rect_error;
   if (!computeStereoRectification(calibration, rectificationOptions(config), out, &rect_error)) {
-    if (error) *error = path + ": " + rect_error + (config.camera.port.model == "flat" ? " (camera.port.*)" : "");
+    if (error) *error = name + ": " + rect_error + (config.camera.port.model == "flat" ? " (camera.port.*)" : "");
     return false;
   }
   return true;
+}
+
+bool buildCameraRectification(const BoardConfig& config, const std::string& board_dir, StereoRectification* out,
+                              bool* needed, std::string* error) {
+  *needed = !config.camera.calibration_file.empty();
+  if (!*needed) return true;
+  const std::string path = (std::filesystem::path(board_dir) / config.camera.calibration_file).string();
+  std::string text;
+  return readTextFile(path, "the stereo calibration (camera.calibration_file)", &text, error) &&
+         buildCameraRectificationFromText(config, text, path, out, error);
 }
 
 }  // namespace deepnav

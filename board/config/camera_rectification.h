@@ -13,6 +13,10 @@ RectificationOptions rectificationOptions(const BoardConfig& config);
 // image size against camera.width_px/height_px and builds the rectification maps (PinAx for a flat
 // port). *needed is false (and nothing is built) when the board names no calibration file: the frames
 // then arrive rectified.
+// The same from the calibration file's text (a recording's metadata); errors name `name`.
+bool buildCameraRectificationFromText(const BoardConfig& config, const std::string& calibration_text,
+                                      const std::string& name, StereoRectification* out, std::string* error);
+
 bool buildCameraRectification(const BoardConfig& config, const std::string& board_dir, StereoRectification* out,
                               bool* needed, std::string* error);
 

@@ -46,38 +46,18 @@ bool readInt(const cv::FileStorage& fs, const std::string& path, const char* nam
 
 }  // namespace
 
-bool writeStereoCalibrationFile(const std::string& path, const StereoCalibration& c, const StereoCalibrationInfo& info,
-                                std::string* error) {
-  try {
-    cv::FileStorage fs(path, cv::FileStorage::WRITE | cv::FileStorage::FORMAT_YAML);
-    if (!fs.isOpened()) {
-      if (error) *error = path + ": cannot write the calibration file";
-      return false;
-    }
-    fs.writeComment("deepnav stereo calibration (deepnav calibrate): p_in_right = R * p_in_left + T, metres");
-    fs << "image_width" << c.image_size.width << "image_height" << c.image_size.height;
-    fs << "camera_matrix_left" << cv::Mat(c.left.K) << "distortion_coefficients_left" << c.left.dist;
-    fs << "camera_matrix_right" << cv::Mat(c.right.K) << "distortion_coefficients_right" << c.right.dist;
-    fs << "R" << cv::Mat(c.R) << "T" << cv::Mat(c.T);
-    fs << "rms_px" << info.rms_px << "pairs_used" << info.pairs_used << "target" << info.target;
-  } catch (const cv::Exception& e) {
-    if (error) *error = path + ": cannot write the calibration file: " + e.what();
-    return false;
-  }
-  return true;
+namespace {
+
+void writeFields(cv::FileStorage& fs, const StereoCalibration& c, const StereoCalibrationInfo& info) {
+  fs.writeComment("deepnav stereo calibration (deepnav calibrate): p_in_right = R * p_in_left + T, metres");
+  fs << "image_width" << c.image_size.width << "image_height" << c.image_size.height;
+  fs << "camera_matrix_left" << cv::Mat(c.left.K) << "distortion_coefficients_left" << c.left.dist;
+  fs << "camera_matrix_right" << cv::Mat(c.right.K) << "distortion_coefficients_right" << c.right.dist;
+  fs << "R" << cv::Mat(c.R) << "T" << cv::Mat(c.T);
+  fs << "rms_px" << info.rms_px << "pairs_used" << info.pairs_used << "target" << info.target;
 }
 
-bool readStereoCalibrationFile(const std::string& path, StereoCalibration* c, std::string* error) {
-  cv::FileStorage fs;
-  try {
-    if (!fs.open(path, cv::FileStorage::READ)) {
-      if (error) *error = path + ": cannot open the stereo calibration file";
-      return false;
-    }
-  } catch (const cv::Exception& e) {
-    if (error) *error = path + ": not an OpenCV YAML calibration file (" + e.err + ")";
-    return false;
-  }
+bool readFields(const cv::FileStorage& fs, const std::string& path, StereoCalibration* c, std::string* error) {
   StereoCalibration out;
   cv::Mat K1, D1, K2, D2, R, T;
   if (!readInt(fs, path, "image_width", &out.image_size.width, error) ||
@@ -96,6 +76,59 @@ bool readStereoCalibrationFile(const std::string& path, StereoCalibration* c, st
   out.T = cv::Vec3d(T);
   *c = out;
   return true;
+}
+
+}  // namespace
+
+bool writeStereoCalibrationFile(const std::string& path, const StereoCalibration& c, const StereoCalibrationInfo& info,
+                                std::string* error) {
+  try {
+    cv::FileStorage fs(path, cv::FileStorage::WRITE | cv::FileStorage::FORMAT_YAML);
+    if (!fs.isOpened()) {
+      if (error) *error = path + ": cannot write the calibration file";
+      return false;
+    }
+    writeFields(fs, c, info);
+  } catch (const cv::Exception& e) {
+    if (error) *error = path + ": cannot write the calibration file: " + e.what();
+    return false;
+  }
+  return true;
+}
+
+std::string stereoCalibrationText(const StereoCalibration& c, const StereoCalibrationInfo& info) {
+  cv::FileStorage fs(".yaml", cv::FileStorage::WRITE | cv::FileStorage::MEMORY | cv::FileStorage::FORMAT_YAML);
+  writeFields(fs, c, info);
+  return fs.releaseAndGetString();
+}
+
+bool readStereoCalibrationFile(const std::string& path, StereoCalibration* c, std::string* error) {
+  cv::FileStorage fs;
+  try {
+    if (!fs.open(path, cv::FileStorage::READ)) {
+      if (error) *error = path + ": cannot open the stereo calibration file";
+      return false;
+    }
+  } catch (const cv::Exception& e) {
+    if (error) *error = path + ": not an OpenCV YAML calibration file (" + e.err + ")";
+    return false;
+  }
+  return readFields(fs, path, c, error);
+}
+
+bool parseStereoCalibrationText(const std::string& text, const std::string& name, StereoCalibration* c,
+                                std::string* error) {
+  cv::FileStorage fs;
+  try {
+    if (text.empty() || !fs.open(text, cv::FileStorage::READ | cv::FileStorage::MEMORY | cv::FileStorage::FORMAT_YAML)) {
+      if (error) *error = name + ": empty or unreadable stereo calibration";
+      return false;
+    }
+  } catch (const cv::Exception& e) {
+    if (error) *error = name + ": not an OpenCV YAML calibration (" + e.err + ")";
+    return false;
+  }
+  return readFields(fs, name, c, error);
 }
 
 }  // namespace deepnav

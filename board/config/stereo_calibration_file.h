@@ -21,4 +21,10 @@ bool writeStereoCalibrationFile(const std::string& path, const StereoCalibration
 // Reads it back; a missing or malformed field fails with "<path>: field '<name>' ...".
 bool readStereoCalibrationFile(const std::string& path, StereoCalibration* calibration, std::string* error);
 
+// The same file's text (for a recording's metadata, or a calibration made up by the simulator).
+std::string stereoCalibrationText(const StereoCalibration& calibration, const StereoCalibrationInfo& info);
+// Parses such a text (the content of a calibration file); errors name `name` and the field.
+bool parseStereoCalibrationText(const std::string& text, const std::string& name, StereoCalibration* calibration,
+                                std::string* error);
+
 }  // namespace deepnav

@@ -38,13 +38,13 @@ bool NavCore::init(const VehicleSetup& setup, RecordSink* sink, std::string* err
   const BoardConfig& c = setup.config;
   fuse_markers_in_stage2_ = c.stage.fuse_markers_in_stage2;
   // As many pair clones as the EKF holds: when full, the oldest is released before the new pair is cloned.
-  vo_.init(robotFromCamera(c), c.ekf.max_clones);
+  vo_.init(robotFromCamera(setup), c.ekf.max_clones);
   smoother_.init(c.loop.output_tau_s);
   StageConfig stage;
   stage.min_workspace_time_s = c.stage.min_workspace_time_s;
   stage.min_faces_seen_fraction = c.stage.min_faces_seen_fraction;
   if (!stage_.init(stage, error) || !ekf_.init(c.ekf, error)) return false;
-  return !has_panel_ || markers_.init(setup.panel, robotFromCamera(c), panelPoseConfig(c),
+  return !has_panel_ || markers_.init(setup.panel, robotFromCamera(setup), panelPoseConfig(c),
                                       markerCovarianceConfig(c), error);
 }
 

@@ -72,7 +72,7 @@ bool initRun(const ReplayOptions& o, const RecordingReader& reader, BenchRun* ru
     return false;
   }
   if (!run->vision.init(visionConfig(run->setup), error)) return false;
-  run->context.init(robotFromCamera(c));
+  run->context.init(robotFromCamera(run->setup));
   if (!run->core.init(run->setup, &run->writer, error)) return false;
   if (o.workspace_in.empty()) return true;
   if (!loadWorkspace(o.workspace_in, &run->vision.workspace(), error)) return false;
@@ -226,7 +226,8 @@ bool loadReplaySetup(const std::string& board_path, const RecordingReader& reade
   if (!board_path.empty()) return loadVehicleSetup(board_path, setup, error);
   bool found = false;
   if (!setupFromMetadata(reader.metadata(kBoardMetadata), reader.metadata("deepnav.panel"),
-                         recording + " (stored board)", setup, error, &found)) {
+                         recording + " (stored board)", setup, error, &found,
+                         reader.metadata(kCalibrationMetadata))) {
     return false;
   }
   if (found) return true;

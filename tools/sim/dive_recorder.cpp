@@ -6,6 +6,7 @@
 #include "board/config/panel_file.h"
 #include "board/config/recording_options.h"
 #include "board/config/vehicle_setup.h"
+#include "tools/sim/port_calibration.h"
 #include "tools/sim/render/panel_knowledge.h"
 #include "tools/sim/render/stereo_renderer.h"
 #include "drivers/recording/recording_writer.h"
@@ -99,6 +100,11 @@ bool recordDive(const DiveRecordOptions& o, DiveRecordSummary* summary, std::str
   if (!loadScenario(o.scenario_path, &scenario, error)) return false;
   VehicleSetup setup;
   if (!loadVehicleSetup(o.board_path, &setup, error)) return false;
+  bool port_described = false;
+  if (!describeSimulatedPort(scenario, &setup, &port_described, error)) return false;
+  if (port_described && o.progress)
+    std::fprintf(stderr, "sim: flat port: the recording's board names the simulated in-air calibration and "
+                         "camera.port (replay with --set camera.port.model=none for no correction)\n");
   SensorSimulator sim;
   if (!sim.init(scenario, o.seed, error)) return false;
   auto frames = std::make_unique<FrameRecorder>();

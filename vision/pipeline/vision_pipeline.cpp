@@ -44,6 +44,18 @@ bool VisionPipeline::init(const VisionPipelineConfig& config, std::string* error
   config_.dense.channels = config.channels;
   frames_seen_ = 0;
   outside_map_pairs_ = 0;
+  if (config.rectify) {
+    if (config.rectification.image_size != cv::Size(config.width_px, config.height_px)) {
+      if (error) *error = "vision: the rectification maps do not have the camera's image size";
+      return false;
+    }
+    if (!rectifier_.init(config.rectification, error) ||
+        !allocateStereoFrame(rectified_, config.width_px, config.height_px, config.channels)) {
+      if (error && error->empty()) *error = "vision: cannot allocate the rectified pair";
+      return false;
+    }
+    rectified_.rectified = true;
+  }
   if (config.detect_markers && !detector_.init(config.markers, error)) return false;
   if (config.run_orb && !orb_.init(config.orb, config_.rig, error)) return false;
   if (config.orb_max_tracked < 1) {
@@ -56,6 +68,16 @@ bool VisionPipeline::init(const VisionPipelineConfig& config, std::string* error
          plane_vo_.init(config.planes, dense_.geometry(), dense_.rows(), dense_.cols(), config.dense.cloud_step_px,
                         error) &&
          workspace_.init(config.workspace, error);
+}
+
+// The pair the rest of the pipeline sees: a raw frame remapped into rectified_ (same buffers every pair).
+const StereoFrame& VisionPipeline::rectified(const StereoFrame& raw) {
+  if (!config_.rectify || raw.rectified) return raw;
+  rectified_.t_us = raw.t_us;
+  rectified_.exposure_us = raw.exposure_us;
+  rectified_.sequence = raw.sequence;
+  rectified_.rectified = rectifier_.rectify(raw.left, raw.right, rectified_.left, rectified_.right);
+  return rectified_;
 }
 
 void VisionPipeline::detectMarkers(const StereoFrame& frame, VisionResult* result) {
@@ -140,14 +162,17 @@ void VisionPipeline::runStage2(const StereoFrame& frame, const VisionContext& co
   }
 }
 
-void VisionPipeline::process(const StereoFrame& frame, const VisionContext& context, VisionResult* result) {
+void VisionPipeline::process(const StereoFrame& input, const VisionContext& context, VisionResult* result) {
   *result = VisionResult{};
-  result->t_us = frame.t_us;
-  result->sequence = frame.sequence;
-  const bool size_ok = frame.left.cols == config_.width_px && frame.left.rows == config_.height_px &&
-                       frame.right.size() == frame.left.size() && frame.right.type() == frame.left.type();
+  result->t_us = input.t_us;
+  result->sequence = input.sequence;
+  const bool size_ok = input.left.cols == config_.width_px && input.left.rows == config_.height_px &&
+                       input.right.size() == input.left.size() && input.right.type() == input.left.type();
+  if (!size_ok) return;
+  const StereoFrame& frame = rectified(input);
+  if (config_.rectify && !frame.rectified) return;  // the remap refused the pair (image type)
   MdmScore mdm;
-  if (!size_ok || !computeMdm(frame.left, &mdm, &mdm_ws_)) return;
+  if (!computeMdm(frame.left, &mdm, &mdm_ws_)) return;
   result->frame_ok = true;
   result->mdm_f1 = mdm.f1;
   result->mdm_f2 = mdm.f2;

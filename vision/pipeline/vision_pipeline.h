@@ -3,6 +3,7 @@
 #include <string>
 
 #include "nav/types/vision_result.h"
+#include "vision/calib/stereo_rectification.h"
 #include "vision/cloud/stereo_cloud.h"
 #include "vision/iqa/mdm.h"
 #include "vision/markers/marker_detector.h"
@@ -24,6 +25,11 @@ struct VisionPipelineConfig {
   int width_px = 688;
   int height_px = 516;
   int channels = 1;
+  // Raw frames (rectified = false) are remapped with these maps, built once at start-up by board/ (plain
+  // pinhole or PinAx), before anything else runs; markers, rig and dense must then hold the rectified
+  // intrinsics (rectification.rectified, baseline_m). Frames that arrive rectified are used as they are.
+  bool rectify = false;
+  StereoRectification rectification;
   bool detect_markers = false;   // when the vehicle has a panel description
   MarkerDetectorConfig markers;  // dictionary, marker size, rectified intrinsics
   StereoRig rig;                 // rectified intrinsics and baseline
@@ -51,7 +57,8 @@ class VisionPipeline {
  public:
   bool init(const VisionPipelineConfig& config, std::string* error);
 
-  // Fills *result for one pair. Never throws; a bad frame gives frame_ok = false.
+  // Fills *result for one pair. Never throws; a bad frame gives frame_ok = false. A raw frame is first
+  // rectified into the pipeline's own preallocated pair (config.rectify).
   void process(const StereoFrame& frame, const VisionContext& context, VisionResult* result);
 
   WorkspaceModel& workspace() { return workspace_; }
@@ -64,6 +71,7 @@ class VisionPipeline {
   std::uint64_t outsideMapPairs() const { return outside_map_pairs_; }
 
  private:
+  const StereoFrame& rectified(const StereoFrame& frame);
   void detectMarkers(const StereoFrame& frame, VisionResult* result);
   void runOrb(const StereoFrame& frame, VisionResult* result);
   void buildWorkspace(const StereoFrame& frame, const VisionContext& context, VisionResult* result);
@@ -72,6 +80,8 @@ class VisionPipeline {
   bool filterByMap(const VisionContext& context);
 
   VisionPipelineConfig config_{};
+  StereoRectifier rectifier_;
+  StereoFrame rectified_;  // the remapped pair, preallocated in init()
   MdmWorkspace mdm_ws_{};
   MarkerDetector detector_;
   MarkerObservations observations_;
