@@ -17,6 +17,7 @@ struct CameraTick {
   Eigen::Quaterniond q_odom_left_cam = Eigen::Quaterniond::Identity();
   Eigen::Vector3d p_right_cam_in_odom_m = Eigen::Vector3d::Zero();
   Eigen::Quaterniond q_odom_right_cam = Eigen::Quaterniond::Identity();
+  bool corrupted = false;  // `garbage` fault: the recorded images are noise (tools/sim/faults/frame_corruption.h)
 };
 
 }  // namespace deepnav

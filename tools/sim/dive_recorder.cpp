@@ -6,6 +6,7 @@
 #include "board/config/panel_file.h"
 #include "board/config/recording_options.h"
 #include "board/config/vehicle_setup.h"
+#include "tools/sim/faults/frame_corruption.h"
 #include "tools/sim/port_calibration.h"
 #include "tools/sim/render/panel_knowledge.h"
 #include "tools/sim/render/stereo_renderer.h"
@@ -38,8 +39,10 @@ struct FrameRecorder {
   RenderTruth render_truth;
   FrameTruth truth;
   bool enabled = false;
+  std::uint64_t seed = 0;
 
-  bool init(const Scenario& scenario, std::uint64_t seed, const BoardConfig& board, bool render, std::string* error) {
+  bool init(const Scenario& scenario, std::uint64_t sim_seed, const BoardConfig& board, bool render, std::string* error) {
+    seed = sim_seed;
     enabled = render && scenario.camera.enabled;
     if (!enabled) return true;
     if (!allocateStereoFrame(frame, scenario.camera.width_px, scenario.camera.height_px, board.camera.channels)) {
@@ -55,6 +58,7 @@ struct FrameRecorder {
   void record(const CameraTick& tick, const SensorSimulator& sim, const Eigen::Vector3d& scene_to_odom_m,
               RecordingWriter* writer, DiveRecordSummary* summary) {
     if (!enabled || !renderer.render(tick, &frame, &render_truth)) return;
+    if (tick.corrupted) corruptStereoFrame(seed, tick.frame_index, &frame);
     frame.exposure_us = 4000;
     writer->recordFrame(frame, -1);
     const KinematicState robot = sim.truthAt(tick.t_us);

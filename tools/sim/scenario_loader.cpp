@@ -153,6 +153,19 @@ void readFaultParams(YamlSection s, FaultSpec* f) {
     case FaultKind::kTimeJitter:
       s.number("std_ms", &f->std_ms, 0.0, 1000.0, "ms");
       break;
+    case FaultKind::kGarbage:
+      s.number("probability", &f->probability, 0.0, 1.0, "(fraction)");
+      break;
+    case FaultKind::kSlow:
+      s.integer("divisor", &f->divisor, 2, 1000, "");
+      break;
+    case FaultKind::kIntermittent:
+      s.number("on_s", &f->on_s, 0.001, 1e6, "s");
+      s.number("off_s", &f->off_s, 0.001, 1e6, "s");
+      break;
+    case FaultKind::kClockJump:
+      s.number("offset_ms", &f->offset_ms, -1e5, 1e5, "ms");
+      break;
   }
   s.finish();
 }
@@ -160,7 +173,8 @@ void readFaultParams(YamlSection s, FaultSpec* f) {
 void readFault(YamlSection s, YamlReadErrors* errors, FaultSpec* f) {
   const int stream = s.choice("stream", {"imu", "dvl", "compass", "attitude", "depth", "camera"});
   if (stream >= 0) f->stream = static_cast<SimStream>(stream + 1);  // the list follows SimStream, less ground truth
-  const int kind = s.choice("kind", {"dropout", "outlier", "stuck", "time_jitter"});
+  const int kind = s.choice("kind", {"dropout", "outlier", "stuck", "time_jitter", "garbage", "slow", "intermittent",
+                                     "clock_jump"});
   if (kind >= 0) f->kind = static_cast<FaultKind>(kind);
   s.number("t_start_s", &f->t_start_s, 0.0, 1e6, "s");
   s.number("t_end_s", &f->t_end_s, 0.0, 1e6, "s");
@@ -172,7 +186,7 @@ void readFault(YamlSection s, YamlReadErrors* errors, FaultSpec* f) {
     return errors->fail("key '" + s.keyPath("t_end_s") + "' must be greater than t_start_s");
   if (f->kind == FaultKind::kOutlier && f->stream == SimStream::kCamera)
     return errors->fail("key '" + s.keyPath("kind") + "': outlier does not apply to the camera stream " +
-                        "(allowed: dropout, stuck, time_jitter)");
+                        "(allowed: dropout, stuck, time_jitter, garbage, slow, intermittent, clock_jump)");
   readFaultParams(s.section("params"), f);
   s.finish();
 }

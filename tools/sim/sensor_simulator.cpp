@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tools/sim/faults/garbage_values.h"
 #include "tools/sim/rotation.h"
 
 namespace deepnav::sim {
@@ -116,13 +117,14 @@ void SensorSimulator::produce(int channel) {
   // Measure first, even if the sample is then dropped, so faults never shift the noise sequence.
   SimSample sample = measure(stream, truth, t_us, index);
   if (stream != SimStream::kGroundTruth) {
-    const FaultDecision d = faults_.decide(stream, usToS(t_us), c.fault_rng);
+    const FaultDecision d = faults_.decide(stream, usToS(t_us), index, c.fault_rng);
     if (d.drop) {
       ++c.dropped;
       return;
     }
     if (d.stuck && c.has_last) sample = c.last;
     if (d.outlier_sigma > 0.0) applyOutlier(d.outlier_sigma, c.fault_rng, &sample);
+    if (d.garbage) fillGarbage(c.fault_rng, &sample);
     c.last = sample;
     c.has_last = true;
     const TimeUs stamp_us = t_us + d.jitter_us;

@@ -1,4 +1,5 @@
 #pragma once
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -12,8 +13,9 @@ namespace deepnav::sim {
 struct FaultDecision {
   bool drop = false;
   bool stuck = false;
+  bool garbage = false;        // replace the content by random values (garbage_values.h)
   double outlier_sigma = 0.0;  // > 0: add +-outlier_sigma * noise sigma to every component
-  TimeUs jitter_us = 0;        // added to the stamp
+  TimeUs jitter_us = 0;        // added to the stamp (time_jitter and clock_jump)
 };
 
 // The scenario's fault list, queried per sample. Random choices (hit or not, jitter) come from the
@@ -22,8 +24,9 @@ struct FaultDecision {
 class FaultSchedule {
  public:
   bool init(const std::vector<FaultSpec>& faults, std::string* error);
-  FaultDecision decide(SimStream stream, double t_s, NormalRng& rng) const;
-  // Largest |jitter| any fault can add: the merger holds events back this long to stay time-ordered.
+  // index: the sample's index in its stream (slow keeps index % divisor == 0).
+  FaultDecision decide(SimStream stream, double t_s, std::uint64_t index, NormalRng& rng) const;
+  // Largest |stamp shift| any fault can add: the merger holds events back this long to stay time-ordered.
   TimeUs maxJitter_us() const { return max_jitter_us_; }
   const std::vector<FaultSpec>& faults() const { return faults_; }
 

@@ -1,0 +1,145 @@
+// The fault kinds added for the fault-injection suite: garbage, slow, intermittent, clock_jump.
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "sim_test_events.h"
+#include "tools/sim/faults/fault_schedule.h"
+#include "tools/sim/faults/garbage_values.h"
+
+namespace deepnav::sim {
+namespace {
+
+using test::ofStream;
+using test::runAll;
+
+constexpr std::uint64_t kSeed = 33;
+
+Scenario withFault(const FaultSpec& fault) {
+  Scenario s;
+  s.duration_s = 20.0;
+  s.faults.push_back(fault);
+  return s;
+}
+
+FaultSpec fault(SimStream stream, FaultKind kind, double t_start_s, double t_end_s) {
+  FaultSpec f;
+  f.stream = stream;
+  f.kind = kind;
+  f.t_start_s = t_start_s;
+  f.t_end_s = t_end_s;
+  return f;
+}
+
+std::vector<SimEvent> cleanStream(SimStream stream) {
+  return ofStream(runAll(withFault(fault(SimStream::kImu, FaultKind::kDropout, 99, 100)), kSeed), stream);
+}
+
+bool inWindow(TimeUs t_us, double start_s, double end_s) { return t_us >= sToUs(start_s) && t_us < sToUs(end_s); }
+
+TEST(SimFaultKinds, NamesRoundTrip) {
+  for (int k = 0; k < 8; ++k) {
+    const auto kind = static_cast<FaultKind>(k);
+    EXPECT_EQ(faultKindFromName(faultKindName(kind)), kind);
+  }
+  EXPECT_FALSE(faultKindFromName("bogus").has_value());
+}
+
+TEST(SimFaultKinds, GarbageReplacesTheContentInsideTheWindowOnly) {
+  // GIVEN compass garbage between 5 and 8 s
+  const std::vector<SimEvent> a = cleanStream(SimStream::kCompass);
+  const std::vector<SimEvent> b =
+      ofStream(runAll(withFault(fault(SimStream::kCompass, FaultKind::kGarbage, 5.0, 8.0)), kSeed), SimStream::kCompass);
+  ASSERT_EQ(a.size(), b.size());
+  int far = 0, inside = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const double ha = std::get<HeadingSample>(a[i].sample).heading_rad;
+    const double hb = std::get<HeadingSample>(b[i].sample).heading_rad;
+    EXPECT_EQ(a[i].t_us, b[i].t_us);
+    EXPECT_GE(hb, 0.0);
+    EXPECT_LT(hb, 2.0 * M_PI);
+    if (!inWindow(a[i].t_us, 5.0, 8.0)) {
+      EXPECT_EQ(ha, hb);  // THEN the rest is untouched
+      continue;
+    }
+    ++inside;
+    if (std::abs(std::remainder(ha - hb, 2.0 * M_PI)) > 0.3) ++far;
+  }
+  // THEN most garbage values are far from the truth (uniform over the circle: 90 % beyond 0.3 rad)
+  EXPECT_GT(far, inside * 7 / 10);
+}
+
+TEST(SimFaultKinds, GarbageOnTheCameraFlagsTheTick) {
+  std::vector<SimEvent> ticks = ofStream(
+      runAll(withFault(fault(SimStream::kCamera, FaultKind::kGarbage, 2.0, 3.0)), kSeed), SimStream::kCamera);
+  int corrupted = 0;
+  for (const SimEvent& e : ticks) {
+    const bool c = std::get<CameraTick>(e.sample).corrupted;
+    EXPECT_EQ(c, inWindow(e.t_us, 2.0, 3.0)) << e.t_us;
+    corrupted += c;
+  }
+  EXPECT_EQ(corrupted, 10);  // 1 s at 10 Hz
+}
+
+TEST(SimFaultKinds, SlowKeepsOneSampleInDivisor) {
+  FaultSpec f = fault(SimStream::kDvl, FaultKind::kSlow, 4.0, 10.0);
+  f.divisor = 5;
+  const std::vector<SimEvent> a = cleanStream(SimStream::kDvl);
+  const std::vector<SimEvent> b = ofStream(runAll(withFault(f), kSeed), SimStream::kDvl);
+  // 6 s at 5 Hz = 30 samples due, 6 kept
+  EXPECT_EQ(a.size(), b.size() + 24);
+  int kept = 0;
+  for (const SimEvent& e : b) kept += inWindow(e.t_us, 4.0, 10.0);
+  EXPECT_EQ(kept, 6);
+}
+
+TEST(SimFaultKinds, IntermittentAlternatesBurstsAndSilences) {
+  FaultSpec f = fault(SimStream::kDepth, FaultKind::kIntermittent, 5.0, 11.0);
+  f.on_s = 0.5;
+  f.off_s = 1.5;
+  const std::vector<SimEvent> b = ofStream(runAll(withFault(f), kSeed), SimStream::kDepth);
+  int kept = 0;
+  for (const SimEvent& e : b) {
+    if (!inWindow(e.t_us, 5.0, 11.0)) continue;
+    ++kept;
+    EXPECT_LT(std::fmod(usToS(e.t_us) - 5.0, 2.0), 0.5 + 1e-9) << e.t_us;
+  }
+  EXPECT_EQ(kept, 15);  // 3 bursts of 0.5 s at 10 Hz
+}
+
+TEST(SimFaultKinds, ClockJumpShiftsStampsAndKeepsTheOutputOrdered) {
+  FaultSpec f = fault(SimStream::kCompass, FaultKind::kClockJump, 6.0, 9.0);
+  f.offset_ms = -750.0;
+  const std::vector<SimEvent> all = runAll(withFault(f), kSeed);
+  for (std::size_t i = 1; i < all.size(); ++i) ASSERT_LE(all[i - 1].t_us, all[i].t_us) << i;
+  const std::vector<SimEvent> a = cleanStream(SimStream::kCompass);
+  const std::vector<SimEvent> b = ofStream(all, SimStream::kCompass);
+  ASSERT_EQ(a.size(), b.size());
+  // Content matched by value: the shift may reorder the compass samples among themselves.
+  int shifted = 0;
+  for (const SimEvent& c : a) {
+    const double h = std::get<HeadingSample>(c.sample).heading_rad;
+    for (const SimEvent& j : b) {
+      if (std::get<HeadingSample>(j.sample).heading_rad != h) continue;
+      EXPECT_EQ(j.t_us - c.t_us, inWindow(c.t_us, 6.0, 9.0) ? -750000 : 0) << c.t_us;
+      shifted += j.t_us != c.t_us;
+    }
+  }
+  EXPECT_EQ(shifted, 30);  // 3 s at 10 Hz
+}
+
+TEST(SimFaultKinds, RejectsBadParameters) {
+  FaultSchedule schedule;
+  std::string error;
+  FaultSpec f = fault(SimStream::kDvl, FaultKind::kSlow, 1.0, 2.0);
+  f.divisor = 0;
+  EXPECT_FALSE(schedule.init({f}, &error));
+  f = fault(SimStream::kDvl, FaultKind::kIntermittent, 1.0, 2.0);
+  f.on_s = 0.0;
+  EXPECT_FALSE(schedule.init({f}, &error));
+}
+
+}  // namespace
+}  // namespace deepnav::sim
