@@ -1,6 +1,7 @@
 // Rectification of one raw stereo pair at the DexROV camera size (688x516) with the start-up maps
-// (cv::remap, fixed-point maps, bilinear), and the one-off cost of building the maps (plain pinhole vs
-// PinAx). OpenCV runs on one thread here, so the figures are per core.
+// (StereoRectifier: fixed-point maps, bilinear, no allocation; beside it cv::remap on the same maps, which
+// allocates scratch images per call), and the one-off cost of building the maps (plain pinhole vs PinAx).
+// OpenCV runs on one thread here, so the figures are per core.
 #include <benchmark/benchmark.h>
 
 #include <opencv2/calib3d.hpp>
@@ -22,7 +23,7 @@ deepnav::RectificationOptions options(bool pinax) {
   return o;
 }
 
-void runRemap(benchmark::State& state, int type, bool pinax) {
+void runRemap(benchmark::State& state, int type, bool pinax, bool opencv = false) {
   cv::setNumThreads(1);
   const deepnav::StereoCalibration rig = deepnav::sim::simulatedCalibrationRig();
   deepnav::StereoRectification maps;
@@ -38,7 +39,12 @@ void runRemap(benchmark::State& state, int type, bool pinax) {
   rng.fill(raw_right, cv::RNG::UNIFORM, cv::Scalar::all(0), cv::Scalar::all(255));
   cv::Mat left(rig.image_size, type), right(rig.image_size, type);
   for (auto _ : state) {
-    benchmark::DoNotOptimize(rectifier.rectify(raw_left, raw_right, left, right));
+    if (opencv) {
+      cv::remap(raw_left, left, maps.left_map_xy, maps.left_map_frac, cv::INTER_LINEAR, cv::BORDER_CONSTANT);
+      cv::remap(raw_right, right, maps.right_map_xy, maps.right_map_frac, cv::INTER_LINEAR, cv::BORDER_CONSTANT);
+    } else {
+      benchmark::DoNotOptimize(rectifier.rectify(raw_left, raw_right, left, right));
+    }
     benchmark::DoNotOptimize(left.data);
   }
 }
@@ -56,6 +62,8 @@ void runBuild(benchmark::State& state, bool pinax) {
 void BM_RectifyPairGrey688x516(benchmark::State& state) { runRemap(state, CV_8UC1, false); }
 void BM_RectifyPairBgr688x516(benchmark::State& state) { runRemap(state, CV_8UC3, false); }
 void BM_RectifyPairGreyPinax688x516(benchmark::State& state) { runRemap(state, CV_8UC1, true); }
+void BM_CvRemapPairGrey688x516(benchmark::State& state) { runRemap(state, CV_8UC1, false, true); }
+void BM_CvRemapPairBgr688x516(benchmark::State& state) { runRemap(state, CV_8UC3, false, true); }
 void BM_BuildMapsPinhole(benchmark::State& state) { runBuild(state, false); }
 void BM_BuildMapsPinax(benchmark::State& state) { runBuild(state, true); }
 
@@ -64,6 +72,8 @@ void BM_BuildMapsPinax(benchmark::State& state) { runBuild(state, true); }
 BENCHMARK(BM_RectifyPairGrey688x516)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_RectifyPairBgr688x516)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_RectifyPairGreyPinax688x516)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_CvRemapPairGrey688x516)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_CvRemapPairBgr688x516)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_BuildMapsPinhole)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_BuildMapsPinax)->Unit(benchmark::kMillisecond);
 BENCHMARK_MAIN();

@@ -1,6 +1,7 @@
 #include "vision/calib/stereo_rectification.h"
 
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 #include <opencv2/calib3d.hpp>
@@ -124,14 +125,64 @@ bool StereoRectifier::init(const StereoRectification& maps, std::string* error) 
   return true;
 }
 
+namespace {
+
+// Bilinear remap with the fixed-point maps of cv::convertMaps (CV_16SC2 integer source pixel, CV_16UC1
+// fraction index fy * 32 + fx in 1/32 px), border pixels 0 as cv::BORDER_CONSTANT. It is cv::remap's
+// INTER_LINEAR on these maps (within one grey level: 10-bit instead of 15-bit weights), written out
+// because cv::remap allocates two scratch images per stripe on every call (OpenCV 4.6 RemapInvoker),
+// and the vision worker allocates nothing per pair.
+template <int kChannels>
+void remapLinear(const cv::Mat& src, const cv::Mat& map_xy, const cv::Mat& map_frac, cv::Mat& dst) {
+  const int w = src.cols, h = src.rows;
+  for (int v = 0; v < dst.rows; ++v) {
+    const cv::Vec2s* xy = map_xy.ptr<cv::Vec2s>(v);
+    const std::uint16_t* frac = map_frac.ptr<std::uint16_t>(v);
+    std::uint8_t* out = dst.ptr<std::uint8_t>(v);
+    for (int u = 0; u < dst.cols; ++u, out += kChannels) {
+      const int x = xy[u][0], y = xy[u][1];
+      const int fx = frac[u] & 31, fy = (frac[u] >> 5) & 31;
+      const int w00 = (32 - fx) * (32 - fy), w01 = fx * (32 - fy), w10 = (32 - fx) * fy, w11 = fx * fy;
+      if (x >= 0 && y >= 0 && x + 1 < w && y + 1 < h) {
+        const std::uint8_t* p0 = src.ptr<std::uint8_t>(y) + x * kChannels;
+        const std::uint8_t* p1 = src.ptr<std::uint8_t>(y + 1) + x * kChannels;
+        for (int c = 0; c < kChannels; ++c)
+          out[c] = static_cast<std::uint8_t>(
+              (p0[c] * w00 + p0[kChannels + c] * w01 + p1[c] * w10 + p1[kChannels + c] * w11 + 512) >> 10);
+        continue;
+      }
+      // At the border each of the four samples is the source pixel or 0 outside the image.
+      const auto sample = [&](int sx, int sy, int c) -> int {
+        return sx >= 0 && sy >= 0 && sx < w && sy < h ? src.ptr<std::uint8_t>(sy)[sx * kChannels + c] : 0;
+      };
+      for (int c = 0; c < kChannels; ++c)
+        out[c] = static_cast<std::uint8_t>((sample(x, y, c) * w00 + sample(x + 1, y, c) * w01 +
+                                            sample(x, y + 1, c) * w10 + sample(x + 1, y + 1, c) * w11 + 512) >>
+                                           10);
+    }
+  }
+}
+
+void remapImage(const cv::Mat& src, const cv::Mat& map_xy, const cv::Mat& map_frac, cv::Mat& dst) {
+  if (src.channels() == 1) {
+    remapLinear<1>(src, map_xy, map_frac, dst);
+  } else {
+    remapLinear<3>(src, map_xy, map_frac, dst);
+  }
+}
+
+}  // namespace
+
 bool StereoRectifier::rectify(const cv::Mat& raw_left, const cv::Mat& raw_right, cv::Mat& rect_left,
                               cv::Mat& rect_right) const {
   const cv::Size size = maps_.image_size;
-  if (raw_left.size() != size || raw_right.size() != size || rect_left.size() != size ||
-      rect_right.size() != size || rect_left.type() != raw_left.type() || rect_right.type() != raw_right.type())
+  const bool type_ok = raw_left.type() == CV_8UC1 || raw_left.type() == CV_8UC3;
+  if (!type_ok || raw_right.type() != raw_left.type() || raw_left.size() != size || raw_right.size() != size ||
+      rect_left.size() != size || rect_right.size() != size || rect_left.type() != raw_left.type() ||
+      rect_right.type() != raw_right.type())
     return false;
-  cv::remap(raw_left, rect_left, maps_.left_map_xy, maps_.left_map_frac, cv::INTER_LINEAR, cv::BORDER_CONSTANT);
-  cv::remap(raw_right, rect_right, maps_.right_map_xy, maps_.right_map_frac, cv::INTER_LINEAR, cv::BORDER_CONSTANT);
+  remapImage(raw_left, maps_.left_map_xy, maps_.left_map_frac, rect_left);
+  remapImage(raw_right, maps_.right_map_xy, maps_.right_map_frac, rect_right);
   return true;
 }
 

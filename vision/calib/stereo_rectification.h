@@ -40,12 +40,14 @@ struct StereoRectification {
 bool computeStereoRectification(const StereoCalibration& calib, const RectificationOptions& options,
                                 StereoRectification* out, std::string* error);
 
-// Applies the maps with cv::remap into preallocated images: nothing is allocated per frame once the
-// destination images have the right size and type.
+// Applies the maps (bilinear, fixed point, as cv::remap INTER_LINEAR on the cv::convertMaps form) into
+// preallocated images: nothing is allocated per frame once the destination images have the right size
+// and type (cv::remap itself allocates scratch images on every call).
 class StereoRectifier {
  public:
   bool init(const StereoRectification& maps, std::string* error);
-  // raw_* and rect_* have the calibrated size; rect_* are preallocated with raw_*'s type.
+  // raw_* and rect_* have the calibrated size, CV_8UC1 or CV_8UC3; rect_* are preallocated with raw_*'s
+  // type. False (nothing written) otherwise.
   bool rectify(const cv::Mat& raw_left, const cv::Mat& raw_right, cv::Mat& rect_left, cv::Mat& rect_right) const;
   const StereoRectification& maps() const { return maps_; }
 
