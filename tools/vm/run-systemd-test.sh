@@ -18,7 +18,8 @@
 # WORK (default BUILD_DIR/vm-systemd/), as an ext4 image the VM boots from; the kernel is the host's
 # Debian linux-image (as tools/vm/run-kernel-tests.sh), with a busybox initramfs that loads virtio and
 # ext4 and switches to the image's /sbin/init. DEEPNAV_VM_TIMEOUT_S bounds the VM run (default 600 s);
-# DEEPNAV_VM_KEEP_ROOTFS=1 reuses the root directory WORK/rootfs of a previous run (same .deb assumed).
+# DEEPNAV_VM_KEEP_ROOTFS=1 reuses the root directory WORK/rootfs of a previous run and only installs
+# this run's .deb there with dpkg (its dependencies must not have changed).
 # Not part of CI: see tools/vm/README.md for the measured time.
 set -euo pipefail
 
@@ -88,7 +89,7 @@ journal_t() {
 }
 ms_between() { awk -v a="$1" -v b="$2" 'BEGIN { if (a == "" || b == "") print ""; else printf "%d", (b - a) * 1000 }'; }
 
-echo "vmtest: systemd $(systemctl --version | head -1), PID 1 is $(cat /proc/1/comm)"
+echo "vmtest: systemd $(systemctl --version | head -1), PID 1 is $(cat /proc/1/comm), checks start at $(uptime_s) s after boot"
 deepnav run --board /etc/deepnav/board.yaml --validate || true
 
 # 1. Start: `systemctl start` of a Type=notify unit returns when READY=1 came; systemd marks the unit
@@ -184,6 +185,7 @@ for r in "${rows[@]}"; do
   IFS='|' read -r res name detail <<<"$r"
   echo "| $name | $res | ${detail//|//} |"
 done
+echo "vmtest: checks done at $(uptime_s) s after boot"
 echo "DEEPNAV_SYSTEMD_RESULT=$failed"
 systemctl --no-block poweroff
 EOF
@@ -204,7 +206,11 @@ rootfs="$work/rootfs"
 img="$work/rootfs.ext4"
 t_rootfs=$(date +%s)
 if [ "${DEEPNAV_VM_KEEP_ROOTFS:-0}" = 1 ] && [ -x "$rootfs/usr/bin/deepnav" ]; then
-  echo "vm-systemd: reusing $rootfs"
+  # The .deb of this run replaces the installed one (dpkg: the dependencies must already be there).
+  echo "vm-systemd: reusing $rootfs, installing $(basename "$deb") with dpkg"
+  cp "$deb" "$rootfs/tmp/"
+  chroot "$rootfs" dpkg -i "/tmp/$(basename "$deb")" >/dev/null
+  rm -f "$rootfs/tmp/$(basename "$deb")"
 else
   rm -rf "$rootfs"
   echo "vm-systemd: mmdebstrap bookworm + systemd + $(basename "$deb") -> $rootfs"
