@@ -93,6 +93,9 @@ struct FakeCameras {
       fill[i].height = footage.pairs.front()[0].rows;
       cameras[i] = arv_gv_fake_camera_new(addresses[i], serials[i]);
       if (!arv_gv_fake_camera_is_running(cameras[i])) return false;
+      // The fake camera polls its software-trigger register at 25 Hz by default (up to 40 ms late, each
+      // camera on its own grid); a real camera exposes microseconds after the trigger.
+      arv_fake_camera_set_trigger_frequency(arv_gv_fake_camera_get_fake_camera(cameras[i]), 1000.0);
       arv_fake_camera_set_fill_pattern(arv_gv_fake_camera_get_fake_camera(cameras[i]), fillFromFootage, &fill[i]);
     }
     return true;
