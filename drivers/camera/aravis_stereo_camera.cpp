@@ -259,6 +259,15 @@ void AravisStereoCamera::closeSide(Side& s) {
 
 bool AravisStereoCamera::startSide(Side& s, std::string* error) {
   GError* e = nullptr;
+  {
+    // A new acquisition: no trigger outstanding. A trigger unanswered for 2 periods is abandoned and
+    // the camera waits up to 2 more for its late frame (trigger_tracker.h). An incomplete GigE frame
+    // handed over later (when the next frame's packets arrive) is told apart by its leader's time.
+    const TimeUs period_us = static_cast<TimeUs>(std::llround(1e6 / config_.rate_hz));
+    std::lock_guard<std::mutex> lock(s.tracker_mutex);
+    s.tracker.configure(2 * period_us, 2 * period_us);
+    s.tracker.reset();
+  }
   arv_camera_start_acquisition(s.camera, &e);
   if (!ok(e, std::string(nameOf(s)) + " '" + idOf(s) + "': AcquisitionStart", error)) return false;
   s.acquiring = true;
@@ -329,13 +338,27 @@ void AravisStereoCamera::runTrigger(Side& s) {
     {
       std::lock_guard<std::mutex> lock(s.control_mutex);
       if (s.camera != nullptr && s.acquiring && !counters.stale.load(std::memory_order_relaxed)) {
-        GError* e = nullptr;
-        arv_camera_software_trigger(s.camera, &e);
-        if (e != nullptr) {
-          g_clear_error(&e);
-          notifyControlLost(s.index);
+        // The tick on the shared grid names the trigger on both cameras.
+        const std::int64_t tick = (next_us - next_trigger_us_) / period_us;
+        bool fire = false;
+        {
+          std::lock_guard<std::mutex> lock(s.tracker_mutex);
+          fire = s.tracker.beginTrigger(tick, now);
+          publishTriggerCounts(s);
         }
-        counters.triggers.fetch_add(1, std::memory_order_relaxed);
+        if (fire) {
+          GError* e = nullptr;
+          arv_camera_software_trigger(s.camera, &e);
+          if (e != nullptr) {
+            g_clear_error(&e);
+            {
+              std::lock_guard<std::mutex> lock(s.tracker_mutex);
+              s.tracker.triggerFailed(monotonicUs());
+            }
+            notifyControlLost(s.index);
+          }
+          counters.triggers.fetch_add(1, std::memory_order_relaxed);
+        }
       }
     }
     // Next period on the shared grid; after a stall (a dead camera's retries) skip, never burst.
@@ -349,8 +372,30 @@ void AravisStereoCamera::drain(Side& s) {
   while (ArvBuffer* b = arv_stream_try_pop_buffer(s.stream)) handleBuffer(s, b);
 }
 
+void AravisStereoCamera::publishTriggerCounts(Side& s) {
+  auto& counters = counters_.side(s.index);
+  const TriggerTracker::Counts& c = s.tracker.counts();
+  counters.trigger_skips.store(c.skipped, std::memory_order_relaxed);
+  counters.trigger_timeouts.store(c.timeouts, std::memory_order_relaxed);
+  counters.unattributed.store(c.unattributed, std::memory_order_relaxed);
+}
+
+std::int64_t AravisStereoCamera::triggerTickOf(Side& s, TimeUs arrival_us, TimeUs* written_us) {
+  std::lock_guard<std::mutex> lock(s.tracker_mutex);
+  const std::int64_t tick = s.tracker.onFrame(arrival_us, written_us);
+  publishTriggerCounts(s);
+  return tick;
+}
+
 void AravisStereoCamera::handleBuffer(Side& s, ArvBuffer* buffer) {
   auto& counters = counters_.side(s.index);
+  // Every buffer, good or not, answers the camera's outstanding software trigger.
+  const guint64 system_ns = arv_buffer_get_system_timestamp(buffer);
+  const TimeUs arrival_us = system_ns == 0 ? monotonicUs()  // no packet of it arrived (cleared, aborted)
+                                           : static_cast<TimeUs>(system_ns / 1000) - realtimeMinusMonotonicUs();
+  const bool software = config_.trigger == "software";
+  TimeUs written_us = 0;
+  const std::int64_t tick = software ? triggerTickOf(s, arrival_us, &written_us) : -1;
   CameraFrameStatus status = frameStatusOf(arv_buffer_get_status(buffer));
   if (status == CameraFrameStatus::kOk && arv_buffer_get_payload_type(buffer) != ARV_BUFFER_PAYLOAD_TYPE_IMAGE) {
     status = CameraFrameStatus::kPayloadNotSupported;
@@ -369,31 +414,37 @@ void AravisStereoCamera::handleBuffer(Side& s, ArvBuffer* buffer) {
     }
   }
   counters.count(status);
-  if (status != CameraFrameStatus::kOk || slot < 0) {
+  if (status == CameraFrameStatus::kOk) {
+    // The camera is alive, whether or not this frame can be used.
+    const TimeUs now_us = monotonicUs();
+    counters.last_good_frame_us.store(now_us, std::memory_order_relaxed);
+    s.last_good_or_open_us = now_us;
+    if (counters.stale.load(std::memory_order_relaxed)) counters.stale.store(false, std::memory_order_relaxed);
+  }
+  if (status != CameraFrameStatus::kOk || slot < 0 || (software && tick < 0)) {
     arv_stream_push_buffer(s.stream, buffer);  // never passed on: straight back to the camera's stream
     return;
   }
-  const TimeUs now_us = monotonicUs();
-  counters.last_good_frame_us.store(now_us, std::memory_order_relaxed);
-  s.last_good_or_open_us = now_us;
-  if (counters.stale.load(std::memory_order_relaxed)) counters.stale.store(false, std::memory_order_relaxed);
 
   // Capture time = middle of the exposure. Host clock: the leader packet arrives right after the
   // readout, so mid-exposure is half an exposure earlier. Device clock: the camera latches the time
   // at exposure start; it is mapped onto the monotonic clock by the smallest arrival - device offset.
-  const TimeUs arrival_us =
-      static_cast<TimeUs>(arv_buffer_get_system_timestamp(buffer) / 1000) - realtimeMinusMonotonicUs();
   TimeUs key_us = arrival_us;
   TimeUs t_us = arrival_us - s.exposure_us / 2;
-  if (config_.timestamp == "device") {
+  if (software && config_.timestamp != "device") {
+    // Software trigger: the exposure starts when the trigger reaches the camera (GVCP write, well
+    // under a millisecond); the write time is free of the stream's transit and receive delays.
+    key_us = written_us;
+    t_us = written_us + s.exposure_us / 2;
+  } else if (config_.timestamp == "device") {
     key_us = static_cast<TimeUs>(arv_buffer_get_timestamp(buffer) / 1000);
     const TimeUs offset = arrival_us - key_us;
     if (!s.device_offset_valid || offset < s.device_offset_us) s.device_offset_us = offset;
     s.device_offset_valid = true;
     t_us = key_us + s.device_offset_us + s.exposure_us / 2;
   }
-  s.held[static_cast<std::size_t>(slot)] = {buffer, t_us};
-  finish(pairer_.offer(s.index, key_us, s.index * kHeld + slot));
+  s.held[static_cast<std::size_t>(slot)] = {buffer, t_us, tick};
+  finish(pairer_.offer(s.index, key_us, s.index * kHeld + slot, tick));
 }
 
 AravisStereoCamera::Held& AravisStereoCamera::held(int handle) {
@@ -432,8 +483,9 @@ void AravisStereoCamera::finish(const FramePairer::Result& r) {
     return img;
   };
   const TimeUs skew_us = std::abs(r.left.t_us - r.right.t_us);
+  // Sequence: the trigger tick with software triggers (gaps show skipped ticks), else the left frame id.
   writer_->write(raw(l.buffer), raw(rr.buffer), l.t_us, skew_us, sides_[0].exposure_us,
-                 arv_buffer_get_frame_id(l.buffer));
+                 l.tick >= 0 ? static_cast<std::uint64_t>(l.tick) : arv_buffer_get_frame_id(l.buffer));
   recycle(r.left.handle);
   recycle(r.right.handle);
 }

@@ -11,6 +11,7 @@
 #include "drivers/camera/frame_pairer.h"
 #include "drivers/camera/raw_image.h"
 #include "drivers/camera/stereo_pair_writer.h"
+#include "drivers/camera/trigger_tracker.h"
 
 // Aravis types, declared here so that only this driver's .cpp includes <arv.h>.
 typedef struct _ArvCamera ArvCamera;
@@ -29,7 +30,9 @@ namespace deepnav {
 // to its stream; good frames are paired by timestamp (FramePairer) and each pair is copied into the
 // frame pool. In software-trigger mode one thread per camera triggers it at camera.rate_hz, both on
 // the same absolute times (a control-channel write to a dead camera blocks for seconds of retries:
-// it stalls neither the frames nor the other camera).
+// it stalls neither the frames nor the other camera); each camera has at most one trigger
+// outstanding (TriggerTracker), so every frame is tagged with the tick it answers and only frames of
+// the same tick are paired.
 // A camera with no good frame for camera.stale_after_s is flagged stale and no longer triggered; a
 // stale camera, or one whose control channel Aravis reports lost, is probed (GVCP discovery, 100 ms)
 // every camera.reconnect_interval_s and reopened once it answers. Reopening allocates: it is the
@@ -56,6 +59,7 @@ class AravisStereoCamera : public CameraSource {
   struct Held {
     ArvBuffer* buffer = nullptr;
     TimeUs t_us = 0;  // capture time on the monotonic clock
+    std::int64_t tick = -1;  // software trigger tick it answers (-1: not software-triggered)
   };
   struct Side {
     AravisStereoCamera* owner = nullptr;
@@ -74,6 +78,10 @@ class AravisStereoCamera : public CameraSource {
     // Held by the camera's trigger thread around each trigger, and try-locked by the driver thread
     // to reopen the camera (so it never waits on a write to a dead camera).
     std::mutex control_mutex;
+    // Software trigger: which tick the camera's next frame answers. Shared by the trigger thread and
+    // the driver thread (short critical sections, never around a camera call).
+    std::mutex tracker_mutex;
+    TriggerTracker tracker;
   };
 
   bool openSide(Side& s, std::string* error);
@@ -83,6 +91,8 @@ class AravisStereoCamera : public CameraSource {
   void runTrigger(Side& s);
   void drain(Side& s);
   void handleBuffer(Side& s, ArvBuffer* buffer);
+  std::int64_t triggerTickOf(Side& s, TimeUs arrival_us, TimeUs* written_us);
+  void publishTriggerCounts(Side& s);  // with tracker_mutex held
   void finish(const FramePairer::Result& r);
   Held& held(int handle);  // handle = side * kHeld + slot
   void recycle(int handle);

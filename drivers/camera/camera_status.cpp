@@ -41,6 +41,9 @@ CameraSideStatus snapshotSide(const CameraCounters::Side& s) {
   out.reconnect_failures = s.reconnect_failures.load(std::memory_order_relaxed);
   out.control_lost = s.control_lost.load(std::memory_order_relaxed);
   out.triggers = s.triggers.load(std::memory_order_relaxed);
+  out.trigger_skips = s.trigger_skips.load(std::memory_order_relaxed);
+  out.trigger_timeouts = s.trigger_timeouts.load(std::memory_order_relaxed);
+  out.unattributed = s.unattributed.load(std::memory_order_relaxed);
   out.last_good_frame_us = s.last_good_frame_us.load(std::memory_order_relaxed);
   return out;
 }
@@ -49,7 +52,8 @@ void sideJson(std::ostringstream& o, const CameraSideStatus& s) {
   o << "{\"connected\":" << (s.connected ? "true" : "false") << ",\"stale\":" << (s.stale ? "true" : "false")
     << ",\"stale_events\":" << s.stale_events << ",\"reconnects\":" << s.reconnects
     << ",\"reconnect_failures\":" << s.reconnect_failures << ",\"control_lost\":" << s.control_lost
-    << ",\"triggers\":" << s.triggers
+    << ",\"triggers\":" << s.triggers << ",\"trigger_skips\":" << s.trigger_skips
+    << ",\"trigger_timeouts\":" << s.trigger_timeouts << ",\"unattributed\":" << s.unattributed
     << ",\"frames\":{";
   bool first = true;
   for (std::size_t i = 0; i < kFrameStatusCount; ++i) {

@@ -40,6 +40,9 @@ struct CameraSideStatus {
   std::uint64_t reconnect_failures = 0;
   std::uint64_t control_lost = 0;  // GigE Vision control failures (heartbeat, failed trigger write)
   std::uint64_t triggers = 0;      // software triggers sent
+  std::uint64_t trigger_skips = 0;     // ticks not triggered: the previous trigger unanswered, or resynchronising
+  std::uint64_t trigger_timeouts = 0;  // software triggers never answered
+  std::uint64_t unattributed = 0;      // frames answering no known software trigger (dropped)
   TimeUs last_good_frame_us = 0;  // monotonic time of the last kOk frame (0: none yet)
 
   std::uint64_t bad() const;  // frames with any status but kOk
@@ -69,6 +72,9 @@ class CameraCounters {
     std::atomic<std::uint64_t> reconnect_failures{0};
     std::atomic<std::uint64_t> control_lost{0};
     std::atomic<std::uint64_t> triggers{0};
+    std::atomic<std::uint64_t> trigger_skips{0};
+    std::atomic<std::uint64_t> trigger_timeouts{0};
+    std::atomic<std::uint64_t> unattributed{0};
     std::atomic<TimeUs> last_good_frame_us{0};
 
     void count(CameraFrameStatus s) {

@@ -21,7 +21,58 @@ void FramePairer::dropOlderThan(int side, TimeUs t_us, Result* r) {
   }
 }
 
-FramePairer::Result FramePairer::offer(int side, TimeUs t_us, int handle) {
+void FramePairer::dropTicksBelow(int side, std::int64_t tick, Result* r) {
+  auto& p = pending_[static_cast<std::size_t>(side)];
+  for (int i = 0; i < count_[static_cast<std::size_t>(side)];) {
+    if (p[static_cast<std::size_t>(i)].tick < tick) {
+      r->dropped[static_cast<std::size_t>(r->dropped_count++)] = p[static_cast<std::size_t>(i)];
+      removeAt(side, i);
+    } else {
+      ++i;
+    }
+  }
+}
+
+// Pairing by trigger tick: only the other side's frame of the same tick is a partner, and only within
+// tolerance (a pair of one trigger whose frames are far apart in time is not synchronised: both go).
+FramePairer::Result FramePairer::offerTicked(int side, const Frame& self) {
+  Result r;
+  const int other = 1 - side;
+  auto& op = pending_[static_cast<std::size_t>(other)];
+  // Ticks grow on each side: the other side's waiting frames of earlier ticks can never pair now.
+  dropTicksBelow(other, self.tick, &r);
+  for (int i = 0; i < count_[static_cast<std::size_t>(other)]; ++i) {
+    const Frame partner = op[static_cast<std::size_t>(i)];
+    if (partner.tick != self.tick) continue;
+    removeAt(other, i);
+    const TimeUs d = partner.t_us - self.t_us;
+    if ((d < 0 ? -d : d) > tolerance_us_) {
+      r.dropped[static_cast<std::size_t>(r.dropped_count++)] = partner;
+      r.dropped[static_cast<std::size_t>(r.dropped_count++)] = self;
+      return r;
+    }
+    r.paired = true;
+    r.left = side == 0 ? self : partner;
+    r.right = side == 0 ? partner : self;
+    dropTicksBelow(side, self.tick, &r);
+    return r;
+  }
+  // The other side is already past this tick (its waiting frames are later): no partner will come.
+  if (count_[static_cast<std::size_t>(other)] > 0) {
+    r.dropped[static_cast<std::size_t>(r.dropped_count++)] = self;
+    return r;
+  }
+  auto& mine = pending_[static_cast<std::size_t>(side)];
+  if (count_[static_cast<std::size_t>(side)] >= max_pending_) {
+    r.dropped[static_cast<std::size_t>(r.dropped_count++)] = mine[0];
+    removeAt(side, 0);
+  }
+  mine[static_cast<std::size_t>(count_[static_cast<std::size_t>(side)]++)] = self;
+  return r;
+}
+
+FramePairer::Result FramePairer::offer(int side, TimeUs t_us, int handle, std::int64_t tick) {
+  if (tick >= 0) return offerTicked(side, Frame{t_us, handle, tick});
   Result r;
   const int other = 1 - side;
   const auto& op = pending_[static_cast<std::size_t>(other)];

@@ -1,6 +1,7 @@
 #pragma once
 #include <array>
 #include <cstddef>
+#include <cstdint>
 
 #include "nav/types/time.h"
 
@@ -10,7 +11,10 @@ namespace deepnav {
 // frames waiting for their partner; a frame is paired with the other side's waiting frame nearest in
 // time if the two are at most `tolerance_us` apart. Frames that can no longer find a partner (the other
 // side has moved past them) are handed back as dropped, so the driver can count them and recycle their
-// buffers. Pure logic on opaque handles: no clock, no allocation.
+// buffers. With software triggers each frame also carries the tick of the trigger it answers
+// (TriggerTracker): frames then pair only with the same tick (and still within tolerance), so the
+// frames of two triggers are never paired however late one arrives. Pure logic on opaque handles: no
+// clock, no allocation.
 class FramePairer {
  public:
   static constexpr int kMaxPending = 8;
@@ -18,6 +22,7 @@ class FramePairer {
   struct Frame {
     TimeUs t_us = 0;  // the timestamp pairs are matched on
     int handle = -1;  // the caller's buffer index
+    std::int64_t tick = -1;  // trigger tick the frame answers; -1: unknown (pair by time only)
   };
   struct Result {
     bool paired = false;
@@ -33,8 +38,9 @@ class FramePairer {
   void setMaxPending(int n) { max_pending_ = n < 1 ? 1 : (n > kMaxPending ? kMaxPending : n); }
   TimeUs tolerance() const { return tolerance_us_; }
 
-  // Offers a good frame of side 0 (left) or 1 (right).
-  Result offer(int side, TimeUs t_us, int handle);
+  // Offers a good frame of side 0 (left) or 1 (right). tick >= 0: the software trigger it answers
+  // (ticks grow on each side); a pair then needs equal ticks and times within tolerance.
+  Result offer(int side, TimeUs t_us, int handle, std::int64_t tick = -1);
 
   // Hands back every waiting frame of one side (camera lost or stopped); returns how many.
   int flush(int side, std::array<Frame, kMaxPending>* out);
@@ -43,6 +49,8 @@ class FramePairer {
  private:
   void removeAt(int side, int index);
   void dropOlderThan(int side, TimeUs t_us, Result* r);
+  void dropTicksBelow(int side, std::int64_t tick, Result* r);
+  Result offerTicked(int side, const Frame& self);
 
   TimeUs tolerance_us_;
   int max_pending_ = kMaxPending;

@@ -175,6 +175,9 @@ struct FakePair {
       cameras[static_cast<std::size_t>(i)] = arv_gv_fake_camera_new(addresses[i], serials[i]);
       if (!arv_gv_fake_camera_is_running(cameras[static_cast<std::size_t>(i)])) return false;
       g_object_set(cameras[static_cast<std::size_t>(i)], "gvsp-lost-ratio", gvsp_lost_ratio, nullptr);
+      // The fake camera looks at its software-trigger register on a grid of this rate (default 25 Hz,
+      // i.e. up to 40 ms late); a real camera exposes microseconds after the trigger.
+      arv_fake_camera_set_trigger_frequency(arv_gv_fake_camera_get_fake_camera(cameras[static_cast<std::size_t>(i)]), 1000.0);
       arv_fake_camera_set_fill_pattern(arv_gv_fake_camera_get_fake_camera(cameras[static_cast<std::size_t>(i)]),
                                        fillFromScene, &fill[static_cast<std::size_t>(i)]);
     }
@@ -275,11 +278,16 @@ struct CpuHog {
 };
 
 TEST_F(AravisStereoTest, UnderCpuLoadPairsAreNeverMixedAndLateFramesAreCountedNotPaired) {
-  // GIVEN the software-triggered fake cameras, and four busy threads on this 2-core machine
+  // GIVEN the software-triggered fake cameras, paired on their own clocks (the in-process fake cameras
+  // share this host's clock, as PTP-synchronised cameras share one: under load the fake cameras'
+  // threads are starved too, and only their clocks say when they really "exposed"), and four busy
+  // threads on this 2-core machine
   FakePair fakes;
   ASSERT_TRUE(fakes.start(0.0));
   Inputs in;
-  AravisStereoCamera camera(baseConfig());
+  CameraSourceConfig config = baseConfig();
+  config.timestamp = "device";
+  AravisStereoCamera camera(config);
   std::string error;
   ASSERT_TRUE(camera.open(&error)) << error;
   ASSERT_TRUE(camera.start(&in.pool, &in.frames, &error)) << error;
