@@ -363,6 +363,12 @@ const std::array kBoardParams = {
       DEEPNAV_FIELD(ekf.history_meas_capacity)},
     P{"ekf.align_imu_samples", ParamType::kInt, "samples", 1, 1000, "20", "", "IMU samples averaged for the initial roll/pitch",
       DEEPNAV_FIELD(ekf.align_imu_samples)},
+    P{"ekf.stuck_after_samples", ParamType::kInt, "samples", 0, 1000, "5", "", "a DVL, depth, compass or AHRS sample bit-identical to the previous n-1 is refused as frozen (0: off; else >= 2)",
+      DEEPNAV_FIELD(ekf.stuck_after_samples)},
+    P{"ekf.gate_reset_after_s", ParamType::kDurationS, "s", 0, 60, "2.0", "", "a DVL, depth, compass or AHRS source rejected this long gets the states it observes reset to their initial sigmas (0: never)",
+      DEEPNAV_FIELD(ekf.gate_reset_after_us)},
+    P{"ekf.coast_accel_noise_mps2_rthz", ParamType::kDouble, "m/s^2/sqrt(Hz)", 0, 10, "0.1", "", "IMU outage: the solution coasts on the last velocity, its covariance grown for a white acceleration of this density",
+      DEEPNAV_FIELD(ekf.coast_accel_noise_mps2_rthz)},
 };
 
 #undef DEEPNAV_FIELD

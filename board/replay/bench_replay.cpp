@@ -46,7 +46,17 @@ struct BenchRun {
   TimeUs first_us = 0;
   TimeUs last_us = 0;
   bool any = false;
+  ReplayTap* tap = nullptr;
 };
+
+// Every input goes to the loop through the tap when there is one (fault injection on the bench).
+void feed(BenchRun* run, const InputSample& sample) {
+  if (run->tap) {
+    run->tap->onInput(sample, &run->core);
+  } else {
+    run->core.consume(sample);
+  }
+}
 
 bool initRun(const ReplayOptions& o, const RecordingReader& reader, BenchRun* run, std::string* error) {
   if (!loadReplaySetup(o.board_path, reader, o.input_path, &run->setup, error) ||
@@ -89,9 +99,11 @@ void noteTime(BenchRun* run, TimeUs t_us) {
 
 void tickAt(BenchRun* run, TimeUs t_us) {
   run->scheduler.recordTickStart(t_us, t_us);  // as fast as possible: a tick is never late
+  if (run->tap) run->tap->beforeTick(t_us, &run->core);
   const TimeUs start = monotonicUs();
   const NavSolution& s = run->core.tick(t_us);
   run->scheduler.recordRun(run->nav_task, monotonicUs() - start);
+  if (run->tap) run->tap->afterTick(s, run->core);
   run->context.push(run->core.feedback());
   const double dive_s = usToS(s.t_us - run->first_us);
   if ((s.status & kStatusPanelFixed) && run->summary->panel_fixed_at_s < 0) run->summary->panel_fixed_at_s = dive_s;
@@ -111,7 +123,7 @@ void advanceTicksTo(BenchRun* run, TimeUs t_us) {
   while (run->next_tick_us < t_us) {
     while (const PendingVision* p = run->pending.front()) {
       if (p->available_us > run->next_tick_us) break;
-      run->core.consume(p->result);
+      feed(run, p->result);
       run->pending.pop();
     }
     tickAt(run, run->next_tick_us);
@@ -176,7 +188,7 @@ bool onRerunEvent(BenchRun* run, const ReplayEvent& e) {
       if (std::holds_alternative<VisionResult>(e.input)) return true;  // recomputed from the images
       noteTime(run, e.t_us);
       advanceTicksTo(run, e.t_us);
-      run->core.consume(e.input);
+      feed(run, e.input);
       return true;
   }
   return true;
@@ -194,7 +206,7 @@ bool onReproduceEvent(BenchRun* run, const ReplayEvent& e) {
       return true;
     case ReplayEvent::Kind::kInput:
       noteTime(run, e.t_us);
-      run->core.consume(e.input);
+      feed(run, e.input);
       return true;
     case ReplayEvent::Kind::kSolution: {
       noteTime(run, e.t_us);
@@ -242,6 +254,7 @@ bool runBenchReplay(const ReplayOptions& o, ReplaySummary* summary, std::string*
   if (!reader.open(o.input_path, error)) return false;
   auto run = std::make_unique<BenchRun>();
   run->summary = summary;
+  run->tap = o.tap;
   if (!initRun(o, reader, run.get(), error)) return false;
   summary->reproduce = reader.hasSolutions() && !o.rerun;
   if (o.progress) {

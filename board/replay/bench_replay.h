@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "board/loop/nav_core.h"
+#include "board/replay/replay_tap.h"
 #include "drivers/replay/recording_reader.h"
 #include "nav/metrics/smoothness.h"
 #include "nav/metrics/stamped_pose.h"
@@ -23,6 +24,7 @@ struct ReplayOptions {
   std::vector<std::string> overrides;  // board "key=value" overrides (board_overrides.h), e.g. vision.vo_mode=all
   std::string workspace_in;      // saved workspace to start from (stage 2 after the panel is found again)
   std::string workspace_out;     // where to save the workspace at the end (empty: not saved)
+  ReplayTap* tap = nullptr;      // bench fault injection / observation of every input and tick (not owned)
 };
 
 // One stereo pair as the vision worker handled it (frames.csv; the report's Fig. 5 and Table III(a)).

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <Eigen/Cholesky>
+
 #include "nav/ekf/ekf_config.h"
 #include "nav/ekf/so3.h"
 
@@ -10,7 +12,14 @@ namespace deepnav {
 bool isValidDvl(const DvlSample& m) {
   if (!m.valid || !m.v_dvl_mps.allFinite() || !m.cov_v_dvl_mps2.allFinite()) return false;
   if (!std::isfinite(m.fom_mps) || m.fom_mps < 0.0) return false;
-  return (m.cov_v_dvl_mps2.diagonal().array() >= 0.0).all();
+  const Eigen::Matrix3d& C = m.cov_v_dvl_mps2;
+  if ((C.diagonal().array() < 0.0).any()) return false;
+  // A covariance that will be used (all variances > 0, linearizeDvl) must be one: symmetric and
+  // positive definite. An indefinite R can make S look fine and break P in the update.
+  if ((C.diagonal().array() > 0.0).all()) {
+    return C.isApprox(C.transpose(), 1e-9) && Eigen::LLT<Eigen::Matrix3d>(C).info() == Eigen::Success;
+  }
+  return true;
 }
 
 bool linearizeDvl(const FilterState& s, const DvlSample& m, const EkfConfig& c, Linearization* out) {

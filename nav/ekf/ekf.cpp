@@ -6,17 +6,25 @@
 #include "nav/ekf/attitude_updater.h"
 #include "nav/ekf/depth_updater.h"
 #include "nav/ekf/dvl_updater.h"
+#include "nav/ekf/gate_reset.h"
 #include "nav/ekf/heading_updater.h"
+#include "nav/ekf/imu_gap_bridge.h"
 #include "nav/ekf/imu_propagation.h"
 #include "nav/ekf/measurement_update.h"
 #include "nav/ekf/pose_updater.h"
 #include "nav/ekf/relative_pose_updater.h"
+#include "nav/ekf/sample_fingerprint.h"
+#include "nav/ekf/so3.h"
 #include "nav/ekf/stochastic_clone.h"
 
 namespace deepnav {
 namespace {
 
 UpdateOutcome refused() { return {false, std::numeric_limits<double>::infinity()}; }
+
+// A lockout is reset only after this many consecutive samples each close to the one before it: random
+// garbage passes that by chance with probability ~ (gate window / sensor range)^5.
+constexpr int kGateResetSmoothSamples = 5;
 
 }  // namespace
 
@@ -102,7 +110,11 @@ void Ekf::setImu(const ImuSample& sample) {
     alignFromImu(sample);
     return;
   }
-  if (sample.t_us - last_imu_t_us_ > config_.imu_max_gap_us) ++counters_.imu_gaps;
+  if (sample.t_us - last_imu_t_us_ > config_.imu_max_gap_us) {
+    ++counters_.imu_gaps;
+    restartAfterImuGap(sample);
+    return;
+  }
   HistoryEntry& entry = history_.push();
   entry.imu = sample;
   stepImu(sample, &entry.state);
@@ -110,6 +122,21 @@ void Ekf::setImu(const ImuSample& sample) {
   health_.record(kSrcImu, FuseStatus::kQueued, FuseStatus::kAccepted, sample.t_us, 0.0);
   counters_.history_overwrites = history_.overwrites();
   trimHistory();
+}
+
+// imu_gap_bridge.h: the state coasts over the gap to this sample, and the history restarts here (no
+// rewind across a gap); measurements taken during the gap cannot be fused any more and are dropped.
+void Ekf::restartAfterImuGap(const ImuSample& sample) {
+  bridgeImuGap(usToS(sample.t_us - state_.t_us), config_, &state_);
+  state_.t_us = sample.t_us;
+  state_.w_robot_meas_radps =
+      imuToRobot(sample, config_.q_robot_imu, config_.p_imu_in_robot_m, state_.w_robot_meas_radps, 0.0).w_robot_radps;
+  finishStep(state_.dim());
+  const TimeUs stale_start = health_.startTime();
+  startHistory(sample);
+  health_.start(stale_start);  // the gap does not reset the stale clocks of the other sources
+  last_imu_t_us_ = sample.t_us;
+  health_.record(kSrcImu, FuseStatus::kQueued, FuseStatus::kAccepted, sample.t_us, 0.0);
 }
 
 void Ekf::alignFromImu(const ImuSample& sample) {
@@ -202,6 +229,10 @@ UpdateOutcome Ekf::applyPayload(const MeasurementPayload& p) {
   }
   if (const auto* m = std::get_if<CloneRelease>(&p)) {
     return {marginaliseClone(m->id, &state_) == CloneStatus::kOk, 0.0};
+  }
+  if (const auto* m = std::get_if<GateReset>(&p)) {
+    resetObservedStates(m->source, config_, &state_);
+    return {true, 0.0};
   }
   return refused();
 }
@@ -307,22 +338,61 @@ void Ekf::trimHistory() {
   while (log_.size() > 0 && log_.at(0).t_us < oldest) log_.popOldest();
 }
 
-FuseResult Ekf::fuseDvl(const DvlSample& m) { return submit(makeLogged(m.t_us, m), kSrcDvl, isValidDvl(m)); }
+bool Ekf::admitAidingSample(NavSource src, TimeUs t_us, std::uint64_t fingerprint, const Eigen::Vector3d& value,
+                            bool angles, double tolerance) {
+  if (!initialised_) return true;
+  if (health_.noteFrozen(src, fingerprint, config_.stuck_after_samples)) return false;
+  Eigen::Vector3d change = value - health_.source(src).last_value;
+  if (angles) {
+    for (int i = 0; i < 3; ++i) change[i] = wrapPi(change[i]);
+  }
+  health_.noteChange(src, value, change.cwiseAbs().maxCoeff(), tolerance);
+  if (aligned_ && health_.source(src).smooth_streak >= kGateResetSmoothSamples &&
+      health_.lockedOut(src, t_us, config_.gate_reset_after_us)) {
+    health_.noteGateReset(src, t_us);
+    ++counters_.gate_resets;
+    submit(makeLogged(t_us, GateReset{t_us, src}), kSrcCount, true);
+  }
+  return true;
+}
+
+FuseResult Ekf::fuseDvl(const DvlSample& m) {
+  const bool valid = isValidDvl(m);
+  if (valid && !admitAidingSample(kSrcDvl, m.t_us, sampleFingerprint(m), m.v_dvl_mps, false,
+                                  config_.gate_dvl_sigma * config_.init_vel_sigma_mps)) {
+    return {FuseStatus::kBadInput, 0.0};
+  }
+  return submit(makeLogged(m.t_us, m), kSrcDvl, valid);
+}
 
 FuseResult Ekf::fuseDepth(const DepthSample& m) {
   const bool valid = isValidDepth(m);
+  if (valid && !admitAidingSample(kSrcDepth, m.t_us, sampleFingerprint(m), Eigen::Vector3d(m.depth_m, 0, 0), false,
+                                  config_.gate_depth_sigma * config_.init_pos_sigma_m)) {
+    return {FuseStatus::kBadInput, 0.0};
+  }
   if (initialised_ && valid && !aligned_) alignment_.setDepth(m.depth_m);
   return submit(makeLogged(m.t_us, m), kSrcDepth, valid);
 }
 
 FuseResult Ekf::fuseHeading(const HeadingSample& m) {
   const bool valid = isValidHeading(m);
+  if (valid && !admitAidingSample(kSrcHeading, m.t_us, sampleFingerprint(m), Eigen::Vector3d(m.heading_rad, 0, 0), true,
+                                  config_.gate_heading_sigma * config_.init_yaw_sigma_rad)) {
+    return {FuseStatus::kBadInput, 0.0};
+  }
   if (initialised_ && valid && !aligned_) alignment_.setYaw(yawFromHeading(m, config_));
   return submit(makeLogged(m.t_us, m), kSrcHeading, valid);
 }
 
 FuseResult Ekf::fuseAttitude(const AttitudeSample& m) {
-  return submit(makeLogged(m.t_us, m), kSrcAttitude, isValidAttitude(m));
+  const bool valid = isValidAttitude(m);
+  if (valid && !admitAidingSample(kSrcAttitude, m.t_us, sampleFingerprint(m),
+                                  Eigen::Vector3d(m.roll_rad, m.pitch_rad, 0), true,
+                                  config_.gate_attitude_sigma * config_.init_roll_pitch_sigma_rad)) {
+    return {FuseStatus::kBadInput, 0.0};
+  }
+  return submit(makeLogged(m.t_us, m), kSrcAttitude, valid);
 }
 
 FuseResult Ekf::fusePose(const PoseMeasurement& m) {

@@ -38,6 +38,7 @@ struct EkfCounters {
   std::uint32_t replays = 0;            // rewinds for a late measurement
   std::uint32_t clone_failures = 0;     // clone or release refused (full, duplicate or unknown id)
   std::uint32_t history_overwrites = 0; // IMU epochs lost because history_imu_capacity < window
+  std::uint32_t gate_resets = 0;        // lockout recoveries of DVL, depth, compass or AHRS (gate_reset.h)
 };
 
 // Error-state EKF of an ROV: IMU-driven nominal state (p, v, q, bg, ba) with a 15-dim error state plus
@@ -100,12 +101,21 @@ class Ekf {
   void finishStep(int sym_dim);
   void trimHistory();
   void alignFromImu(const ImuSample& sample);
+  void restartAfterImuGap(const ImuSample& sample);
   void startHistory(const ImuSample& sample);
   bool isValidImu(const ImuSample& sample) const;
   std::uint32_t statusBits(TimeUs now_us) const;
+  void coast(TimeUs now_us, NavSolution* s) const;
   void noteInputTime(TimeUs t_us);
   NavSource sourceOf(const MeasurementPayload& payload) const;
   LoggedMeasurement makeLogged(TimeUs t_us, const MeasurementPayload& payload);
+  // Door checks of a valid DVL/depth/compass/AHRS sample: false when it is frozen (counted); logs a gate
+  // reset before it when its source is locked out.
+  // value: the sample's measured values; angles: wrap their changes to [-pi, pi]; tolerance: the largest
+  // change between consecutive samples of a sensor that looks healthy by itself (only then is a lockout
+  // reset, so that random garbage never opens the gate).
+  bool admitAidingSample(NavSource src, TimeUs t_us, std::uint64_t fingerprint, const Eigen::Vector3d& value,
+                         bool angles, double tolerance);
 
   EkfConfig config_;
   bool initialised_ = false;

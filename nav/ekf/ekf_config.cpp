@@ -97,6 +97,13 @@ bool checkTiming(const EkfConfig& c, std::string* e) {
   }
   if (c.max_clones < 1 || c.max_clones > es::kMaxClones) return fail(e, "max_clones", "must be in [1, es::kMaxClones]");
   if (c.align_imu_samples < 1) return fail(e, "align_imu_samples", "must be >= 1");
+  if (c.stuck_after_samples < 0 || c.stuck_after_samples == 1) {
+    return fail(e, "stuck_after_samples", "must be 0 (off) or >= 2");
+  }
+  if (c.gate_reset_after_us < 0) return fail(e, "gate_reset_after_us", "must be >= 0");
+  if (!(c.coast_accel_noise_mps2_rthz >= 0.0) || !std::isfinite(c.coast_accel_noise_mps2_rthz)) {
+    return fail(e, "coast_accel_noise_mps2_rthz", "must be finite and >= 0");
+  }
   return true;
 }
 

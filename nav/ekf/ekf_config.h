@@ -82,6 +82,22 @@ struct EkfConfig {
   TimeUs timeout_vo_us = 0;        // both VO sources (ORB and planes)
   TimeUs position_aided_timeout_us = 2'000'000;  // kStatusPositionValid while a pose/VO fused this recently
 
+  // --- Faulty streams (tests/integration/fault_sensors_test.cpp) -----------------------------------------
+  // A DVL, depth, compass or AHRS sample bit-identical to the previous `stuck_after_samples` - 1 of its
+  // source is refused as frozen (a real sensor's noise never repeats every bit; a quantised one at rest
+  // may, and then refusing a value the filter already has loses nothing); 0: not checked.
+  int stuck_after_samples = 5;
+  // A DVL, depth, compass or AHRS source whose samples have all been rejected for this long (a gate
+  // lockout: the state drifted away while the filter grew overconfident) gets the states it observes
+  // decorrelated and their variances raised to the initial sigmas, once per period, so that the gate
+  // can let it back in; 0: never.
+  TimeUs gate_reset_after_us = 2'000'000;
+  // IMU outage (no IMU sample for longer than timeout_imu_us, or a gap over imu_max_gap_us): nothing
+  // propagates the state, so the solution (ekf_solution.cpp) and then the state (imu_gap_bridge.h) coast
+  // on the last velocity, their covariance grown for a white acceleration of this density
+  // (nearly-constant-velocity model), m/s^2/sqrt(Hz).
+  double coast_accel_noise_mps2_rthz = 0.1;
+
   // --- Delayed fusion -----------------------------------------------------------------------------------
   TimeUs max_delay_us = 500'000;       // measurements older than now - this are dropped and counted
   int history_imu_capacity = 160;      // snapshots kept; must cover max_delay at the IMU rate (+2)

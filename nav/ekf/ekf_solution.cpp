@@ -18,6 +18,29 @@ std::uint32_t Ekf::statusBits(TimeUs now_us) const {
   return bits;
 }
 
+// IMU outage: the state is stuck at the last IMU sample (state_.t_us), as nothing can propagate it. The
+// solution coasts on the last velocity over dt = now - state_.t_us, with its covariance grown for a white
+// acceleration of density q = coast_accel_noise^2 (nearly-constant-velocity model, Bar-Shalom et al. 2001,
+// sec. 6.2.2):
+//   P_p += dt P_pv + dt P_vp + dt^2 P_v + q dt^3 / 3,   P_v += q dt,
+// and neither its attitude nor its velocity is flagged valid. The filter itself resumes from its own
+// state with the next IMU sample.
+void Ekf::coast(TimeUs now_us, NavSolution* s) const {
+  const double dt = usToS(now_us - state_.t_us);
+  if (!(dt > 0.0)) return;
+  const Eigen::Matrix3d P_pv = state_.P.block<3, 3>(es::kP, es::kV);
+  const Eigen::Matrix3d P_v = state_.P.block<3, 3>(es::kV, es::kV);
+  const double a2 = config_.coast_accel_noise_mps2_rthz * config_.coast_accel_noise_mps2_rthz;
+  s->p_robot_in_odom_m += dt * s->v_robot_in_odom_mps;
+  s->cov_pose.block<3, 3>(0, 0) += dt * (P_pv + P_pv.transpose()) + dt * dt * P_v +
+                                   Eigen::Matrix3d::Identity() * (a2 * dt * dt * dt / 3.0);
+  const Eigen::Matrix3d P_vtheta = state_.P.block<3, 3>(es::kV, es::kTheta);
+  s->cov_pose.block<3, 3>(0, 3) += dt * P_vtheta;
+  s->cov_pose.block<3, 3>(3, 0) += dt * P_vtheta.transpose();
+  s->cov_v_mps2 += Eigen::Matrix3d::Identity() * (a2 * dt);
+  s->status &= ~(kStatusAttitudeValid | kStatusVelocityValid);
+}
+
 NavSolution Ekf::solution() const { return solution(0); }
 
 NavSolution Ekf::solution(TimeUs now_us) const {
@@ -36,6 +59,7 @@ NavSolution Ekf::solution(TimeUs now_us) const {
   s.cov_v_mps2 = state_.P.block<3, 3>(es::kV, es::kV);
   s.stage = aligned_ ? NavStage::kWorkspace : NavStage::kInit;  // the stage machine refines this
   s.status = statusBits(now);
+  if (aligned_ && health_.isStale(kSrcImu, now)) coast(now, &s);
   s.faults = initialised_ ? health_.faultBits(now) : 0;
   s.rejected_total = health_.rejectedTotal();
   s.dropped_late_total = health_.droppedLateTotal();

@@ -21,9 +21,14 @@ struct CloneRelease {
   TimeUs t_us = 0;
   std::uint32_t id = 0;
 };
+// A lockout recovery (gate_reset.h) travels the same way, just before the sample that triggered it.
+struct GateReset {
+  TimeUs t_us = 0;
+  NavSource source = kSrcCount;
+};
 
 using MeasurementPayload = std::variant<DvlSample, DepthSample, HeadingSample, AttitudeSample, PoseMeasurement,
-                                        RelativePoseMeasurement, CloneRequest, CloneRelease>;
+                                        RelativePoseMeasurement, CloneRequest, CloneRelease, GateReset>;
 
 struct LoggedMeasurement {
   TimeUs t_us = 0;

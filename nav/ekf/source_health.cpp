@@ -37,6 +37,35 @@ void SourceHealthMonitor::record(NavSource src, FuseStatus previous, FuseStatus 
   h.last_test_ratio = test_ratio;
 }
 
+bool SourceHealthMonitor::noteFrozen(NavSource src, std::uint64_t fingerprint, int limit) {
+  SourceHealth& h = at(src);
+  h.repeats = h.repeats > 0 && fingerprint == h.last_fingerprint ? h.repeats + 1 : 1;
+  h.last_fingerprint = fingerprint;
+  if (limit <= 0 || h.repeats < limit) return false;
+  ++h.counters.frozen;
+  h.last_rejected = true;
+  return true;
+}
+
+bool SourceHealthMonitor::lockedOut(NavSource src, TimeUs t_us, TimeUs after_us) const {
+  const SourceHealth& h = source(src);
+  if (after_us <= 0 || !h.last_rejected) return false;
+  const TimeUs since = std::max({h.last_accepted_t_us, h.last_gate_reset_t_us, start_us_});
+  return t_us - since > after_us;
+}
+
+void SourceHealthMonitor::noteGateReset(NavSource src, TimeUs t_us) {
+  SourceHealth& h = at(src);
+  h.last_gate_reset_t_us = std::max(h.last_gate_reset_t_us, t_us);
+  ++h.counters.gate_resets;
+}
+
+void SourceHealthMonitor::noteChange(NavSource src, const Eigen::Vector3d& value, double change, double tolerance) {
+  SourceHealth& h = at(src);
+  h.smooth_streak = change <= tolerance ? h.smooth_streak + 1 : 0;
+  h.last_value = value;
+}
+
 bool SourceHealthMonitor::isStale(NavSource src, TimeUs now_us) const {
   const TimeUs timeout = timeout_us_[static_cast<std::size_t>(src)];
   if (timeout <= 0) return false;

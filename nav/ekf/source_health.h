@@ -2,6 +2,8 @@
 #include <array>
 #include <cstdint>
 
+#include <Eigen/Core>
+
 #include "nav/ekf/fuse_result.h"
 #include "nav/types/nav_solution.h"
 #include "nav/types/time.h"
@@ -15,14 +17,21 @@ struct SourceCounters {
   std::uint32_t rejected = 0;
   std::uint32_t dropped_late = 0;
   std::uint32_t bad_input = 0;
+  std::uint32_t frozen = 0;       // refused: bit-identical to the previous ones (EkfConfig::stuck_after_samples)
+  std::uint32_t gate_resets = 0;  // lockout recoveries (EkfConfig::gate_reset_after_us, gate_reset.h)
 };
 
 struct SourceHealth {
   SourceCounters counters;
   TimeUs last_accepted_t_us = -1;  // -1: never
   TimeUs last_seen_t_us = -1;      // latest valid sample that reached the gate (accepted or rejected)
-  bool last_rejected = false;      // outcome of the latest (in capture time) fused sample
+  bool last_rejected = false;      // outcome of the latest (in capture time) fused sample, or frozen
   double last_test_ratio = 0.0;
+  std::uint64_t last_fingerprint = 0;  // sample_fingerprint.h of the latest sample
+  int repeats = 0;                     // consecutive samples with that fingerprint
+  Eigen::Vector3d last_value = Eigen::Vector3d::Zero();  // measured values of the latest sample
+  int smooth_streak = 0;  // consecutive samples each within the reset gate of the one before
+  TimeUs last_gate_reset_t_us = -1;
 };
 
 // Per-source counters, stale and reject flags (PX4 ekf2 style). A source is stale when its timeout is
@@ -34,9 +43,21 @@ class SourceHealthMonitor {
  public:
   void configure(const EkfConfig& config);
   void start(TimeUs t_us);  // at alignment or reset; keeps the counters
+  TimeUs startTime() const { return start_us_; }
   void record(NavSource src, FuseStatus previous, FuseStatus now, TimeUs t_us, double test_ratio);
   void countDroppedLate(NavSource src) { ++at(src).counters.dropped_late; }
   void countBadInput(NavSource src) { ++at(src).counters.bad_input; }
+  // Notes a sample's fingerprint; true when it is the limit-th (or later) identical one in a row (limit 0:
+  // never). Such a sample is counted frozen and raises the reject flag; it does not count as seen, so a
+  // frozen source also goes stale after its timeout.
+  bool noteFrozen(NavSource src, std::uint64_t fingerprint, int limit);
+  // True when the source's latest sample was rejected (or frozen) and none was accepted, nor the
+  // source reset, for longer than after_us before t_us (after_us 0: never).
+  bool lockedOut(NavSource src, TimeUs t_us, TimeUs after_us) const;
+  void noteGateReset(NavSource src, TimeUs t_us);
+  // Notes the change of the source's measured values since its previous sample (largest component,
+  // angles wrapped by the caller): within `tolerance` extends the smooth streak, else restarts it.
+  void noteChange(NavSource src, const Eigen::Vector3d& value, double change, double tolerance);
   bool isStale(NavSource src, TimeUs now_us) const;
   bool acceptedWithin(NavSource src, TimeUs now_us, TimeUs window_us) const;
   std::uint32_t faultBits(TimeUs now_us) const;  // staleBit() | rejectBit() of every source
