@@ -13,12 +13,7 @@
 
 #include "board/config/board_overrides.h"
 #include "board/config/vehicle_setup.h"
-// GCC 12 flags the counter's sized delete when it inlines the fixture's destruction (a false positive:
-// every allocation of the counter goes through malloc).
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
 #include "tests/support/alloc_counter.h"
-#pragma GCC diagnostic pop
 #include "tools/sim/port_calibration.h"
 #include "tools/sim/render/stereo_renderer.h"
 #include "tools/sim/render/view_tick.h"

@@ -32,6 +32,10 @@ extern "C" void* realloc(void* p, size_t n) {
 }
 #endif
 
+// Every allocation below goes through malloc, so free is the matching release; GCC 12 cannot see that
+// when it inlines a sized delete into a caller and warns (-Wmismatched-new-delete, an error here).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmismatched-new-delete"
 void* operator new(std::size_t n) {
   noteAllocation();
   if (void* p = std::malloc(n ? n : 1)) return p;
@@ -47,4 +51,5 @@ void operator delete(void* p) noexcept { std::free(p); }
 void operator delete[](void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+#pragma GCC diagnostic pop
 

@@ -71,8 +71,19 @@ bool VisionPipeline::init(const VisionPipelineConfig& config, std::string* error
 }
 
 // The pair the rest of the pipeline sees: a raw frame remapped into rectified_ (same buffers every pair).
+// Without maps the board declares the frames rectified (camera.* are their intrinsics), whatever the
+// driver marked them: they are passed on as such (image headers only, no copy).
 const StereoFrame& VisionPipeline::rectified(const StereoFrame& raw) {
-  if (!config_.rectify || raw.rectified) return raw;
+  if (raw.rectified) return raw;
+  if (!config_.rectify) {
+    as_rectified_.t_us = raw.t_us;
+    as_rectified_.exposure_us = raw.exposure_us;
+    as_rectified_.sequence = raw.sequence;
+    as_rectified_.left = raw.left;
+    as_rectified_.right = raw.right;
+    as_rectified_.rectified = true;
+    return as_rectified_;
+  }
   rectified_.t_us = raw.t_us;
   rectified_.exposure_us = raw.exposure_us;
   rectified_.sequence = raw.sequence;

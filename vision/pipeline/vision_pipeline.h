@@ -27,7 +27,9 @@ struct VisionPipelineConfig {
   int channels = 1;
   // Raw frames (rectified = false) are remapped with these maps, built once at start-up by board/ (plain
   // pinhole or PinAx), before anything else runs; markers, rig and dense must then hold the rectified
-  // intrinsics (rectification.rectified, baseline_m). Frames that arrive rectified are used as they are.
+  // intrinsics (rectification.rectified, baseline_m). Frames that arrive rectified are used as they are;
+  // without maps every frame is taken as rectified with the rig's intrinsics (the board names no
+  // calibration: the cameras deliver rectified images, whatever the driver marks them).
   bool rectify = false;
   StereoRectification rectification;
   bool detect_markers = false;   // when the vehicle has a panel description
@@ -81,7 +83,8 @@ class VisionPipeline {
 
   VisionPipelineConfig config_{};
   StereoRectifier rectifier_;
-  StereoFrame rectified_;  // the remapped pair, preallocated in init()
+  StereoFrame rectified_;     // the remapped pair, preallocated in init()
+  StereoFrame as_rectified_;  // no maps: the driver's raw-marked pair, declared rectified by the board
   MdmWorkspace mdm_ws_{};
   MarkerDetector detector_;
   MarkerObservations observations_;
