@@ -55,7 +55,7 @@ RunTimeline readTimeline(const std::string& recording) {
 
 TEST(ServiceRestart, KilledInStage2ResumesInStage2FromTheSavedWorkspace) {
   const std::string dive = testing::makeTestDive(
-      "restart", 40.0, 11, true, {{"start_hold_s: 4.0", "start_hold_s: 1.0"}, {"approach_s: 26.0", "approach_s: 8.0"}});
+      "restart", 20.0, 11, true, {{"start_hold_s: 4.0", "start_hold_s: 1.0"}, {"approach_s: 26.0", "approach_s: 8.0"}});
   const std::string state = testing::tempPath("restart_state");
   std::filesystem::remove_all(state);
 
