@@ -86,6 +86,7 @@ struct BoardConfig {
     double quality_hysteresis;
     bool planes_when_orb_lost;    // adaptive: plane VO for a pair the ORB VO could not track
     int orb_max_tracked;          // tracked ORB count scoring 1 in m_I
+    int orb_reset_after_lost_frames;  // new ORB map after this many lost pairs (0: never)
     std::string dense_method;     // elas | sgbm | sgbm-wls
     int dense_scale_down;         // 1 or 2
     int dense_disparities;        // at the reduced size

@@ -102,6 +102,9 @@ VisionPipelineConfig visionConfig(const VehicleSetup& s) {
   v.modality.hysteresis = c.quality_hysteresis;
   v.modality.planes_when_orb_lost = c.planes_when_orb_lost;
   v.orb_max_tracked = c.orb_max_tracked;
+  // After a gap of frames the view has moved on and relocalisation against the old keyframes can fail
+  // forever (fault_vision_test: no ORB result for the rest of the dive after 2 s of missing frames).
+  v.orb.reset_after_lost_frames = c.orb_reset_after_lost_frames;
   v.dense.method = c.dense_method == "sgbm"       ? DenseStereoMethod::kSgbm
                    : c.dense_method == "sgbm-wls" ? DenseStereoMethod::kSgbmWls
                                                   : DenseStereoMethod::kElas;
