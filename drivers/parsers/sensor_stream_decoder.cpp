@@ -38,9 +38,10 @@ const char* sensorProtocolName(SensorProtocol protocol) {
 SensorStreamDecoder::SensorStreamDecoder() = default;
 SensorStreamDecoder::~SensorStreamDecoder() = default;
 
-bool SensorStreamDecoder::init(SensorProtocol protocol) {
+bool SensorStreamDecoder::init(SensorProtocol protocol, const PlausibilityLimits& limits) {
   protocol_ = protocol;
   counters_ = {};
+  plausible_ = FramePlausibility(limits);
   pd6_ = {};
   switch (protocol) {
     case SensorProtocol::kPd0:
@@ -74,6 +75,7 @@ bool SensorStreamDecoder::next(RawFrame* frame, FrameError* error) {
     if (st == FrameStatus::kNeedMore) return false;
     ++counters_.bad_frames;
     counters_.bytes_skipped += error->skipped;
+    plausible_.onRejectedFrame();
   }
 }
 
@@ -93,6 +95,14 @@ void SensorStreamDecoder::deliver(bool accepted) {
   if (!accepted) ++counters_.sink_refused;
 }
 
+// A checksum-valid frame that is not plausible in this stream is counted bad and gives no sample.
+bool SensorStreamDecoder::plausibleFrame(FramePlausibility::Verdict v) {
+  if (v == FramePlausibility::Verdict::kAccepted) return true;
+  ++counters_.bad_frames;
+  ++counters_.implausible;
+  return false;
+}
+
 void SensorStreamDecoder::onFrame(const RawFrame& f, TimeUs t_us, SampleSink* sink) {
   const char* why = "";
   const std::string_view line(reinterpret_cast<const char*>(f.data), f.size);
@@ -102,6 +112,7 @@ void SensorStreamDecoder::onFrame(const RawFrame& f, TimeUs t_us, SampleSink* si
     case SensorProtocol::kPd0: {
       DvlSample s;
       ok = decodePd0Ensemble(f.data, f.size, ensemble_.get(), &why);
+      if (ok && !plausibleFrame(plausible_.checkPd0(f.data, f.size, *ensemble_))) return;
       if (ok && pd0ToDvlSample(*ensemble_, t_us, &s)) deliver(sink->onDvl(s)), used = true;
       break;
     }
@@ -118,6 +129,7 @@ void SensorStreamDecoder::onFrame(const RawFrame& f, TimeUs t_us, SampleSink* si
       DvlSample s;
       const WlDecode d = line[0] == '{' ? parseWlDvlJson(line, &r, &why) : parseWlDvlSerialLine(line, &r, &why);
       ok = d != WlDecode::kInvalid;
+      if (d == WlDecode::kDecoded && !plausibleFrame(plausible_.checkWaterLinked(r))) return;
       if (d == WlDecode::kDecoded && dvlSampleFromWlReport(r, t_us, &s)) deliver(sink->onDvl(s)), used = true;
       break;
     }
@@ -128,6 +140,7 @@ void SensorStreamDecoder::onFrame(const RawFrame& f, TimeUs t_us, SampleSink* si
       ok = parseNmea0183Sentence(line, true, &s, &why);
       const NmeaDecode d = ok ? decodeNmea0183Heading(s, &r, &why) : NmeaDecode::kInvalid;
       ok = d != NmeaDecode::kInvalid;
+      if (d == NmeaDecode::kDecoded && !plausibleFrame(plausible_.checkNmeaHeading(r))) return;
       if (d == NmeaDecode::kDecoded && headingSampleFromNmea(r, t_us, &h)) deliver(sink->onHeading(h)), used = true;
       break;
     }
@@ -137,6 +150,7 @@ void SensorStreamDecoder::onFrame(const RawFrame& f, TimeUs t_us, SampleSink* si
       ok = splitXbusFrame(f.data, f.size, &m);
       if (ok && m.message_id == kXbusMtData2) {
         ok = decodeXsensMtData2(m.payload, m.payload_size, &d, &why);
+        if (ok && !plausibleFrame(plausible_.checkXsens(m, d))) return;
         ImuSample imu;
         AttitudeSample att;
         if (ok && imuSampleFromXsens(d, t_us, &imu)) deliver(sink->onImu(imu)), used = true;
@@ -147,6 +161,7 @@ void SensorStreamDecoder::onFrame(const RawFrame& f, TimeUs t_us, SampleSink* si
   }
   if (!ok) {
     ++counters_.bad_frames;
+    plausible_.onRejectedFrame();
     return;
   }
   ++counters_.frames;

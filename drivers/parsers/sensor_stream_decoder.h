@@ -4,6 +4,7 @@
 #include <memory>
 #include <string_view>
 
+#include "drivers/parsers/frame_plausibility.h"
 #include "drivers/parsers/line_framer.h"
 #include "drivers/parsers/pd0_framer.h"
 #include "drivers/parsers/pd6_sentence.h"
@@ -32,11 +33,12 @@ class SensorStreamDecoder {
     uint64_t samples = 0;        // samples handed to the sink
     uint64_t sink_refused = 0;   // samples the sink could not take
     uint64_t ignored = 0;        // valid messages with nothing for the nav loop
+    uint64_t implausible = 0;    // checksum-valid frames rejected by FramePlausibility (counted in bad_frames too)
   };
 
   SensorStreamDecoder();
   ~SensorStreamDecoder();
-  bool init(SensorProtocol protocol);
+  bool init(SensorProtocol protocol, const PlausibilityLimits& limits = {});
   // Feeds n bytes that arrived at t_us (the clock of the nav loop); samples go to `sink`.
   void feed(const uint8_t* data, size_t n, TimeUs t_us, SampleSink* sink);
   const Counters& counters() const { return counters_; }
@@ -45,6 +47,7 @@ class SensorStreamDecoder {
  private:
   void onFrame(const RawFrame& frame, TimeUs t_us, SampleSink* sink);
   void deliver(bool accepted);
+  bool plausibleFrame(FramePlausibility::Verdict v);
   bool next(RawFrame* frame, FrameError* error);
   size_t push(const uint8_t* data, size_t n);
 
@@ -54,6 +57,7 @@ class SensorStreamDecoder {
   XbusFramer xbus_;
   std::unique_ptr<Pd0Ensemble> ensemble_;
   Pd6DvlAssembler pd6_;
+  FramePlausibility plausible_;
   Counters counters_;
 };
 
