@@ -77,7 +77,6 @@ class FramePlausibility {
   double heading_deg_ = 0, pitch_deg_ = 0, roll_deg_ = 0;
   std::array<double, 4> velocity_mps_{};
   std::array<bool, 4> velocity_valid_{};
-  double rot_dpm_ = 0;
 };
 
 }  // namespace deepnav
