@@ -6,3 +6,6 @@ tools/setup.sh
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_TOOLCHAIN_FILE=toolchains/native.cmake
 cmake --build build -j"$(nproc)"
 ctest --test-dir build --output-on-failure -j"$(nproc)" --timeout 600
+# Sanitizer stage (issue 9, tools/sanitize/README.md): the whole suite under ASan+UBSan, the threaded
+# runtime under TSan; any finding fails. DEEPNAV_SANITIZERS=0 skips it (quick local runs).
+if [[ "${DEEPNAV_SANITIZERS:-1}" != 0 ]]; then tools/sanitize/run.sh; fi

@@ -42,7 +42,9 @@ bool LiveLoop::init(const VehicleSetup& setup, const std::string& recording_path
   recording_ = !recording_path.empty() && c.recording.enabled;
   sink_ = nullptr;
   if (recording_) {
-    if (!recorder_.start(recording_path, recordingOptions(c), recordingMetadata(setup),
+    QueuedRecorder::MetadataList metadata = recordingMetadata(setup);
+    metadata.insert(metadata.end(), extra_metadata_.begin(), extra_metadata_.end());
+    if (!recorder_.start(recording_path, recordingOptions(c), metadata,
                          static_cast<std::size_t>(c.buffers.record), static_cast<std::size_t>(c.buffers.frames),
                          &inputs_.pool, error)) {
       return false;

@@ -2,6 +2,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <mutex>
 #include <string>
 #include <thread>
@@ -35,6 +36,11 @@ class LiveLoop {
   LiveLoop(const LiveLoop&) = delete;
   LiveLoop& operator=(const LiveLoop&) = delete;
 
+  // Before init(): one more metadata record for the recording (e.g. deepnav.workspace: the run started from
+  // a saved workspace, which its stage machine knows and a reproduction must too).
+  void addRecordingMetadata(const std::string& name, const std::map<std::string, std::string>& values) {
+    extra_metadata_.push_back({name, values});
+  }
   // recording_path empty: no recording.
   bool init(const VehicleSetup& setup, const std::string& recording_path, std::string* error);
   LiveInputs& inputs() { return inputs_; }
@@ -102,6 +108,7 @@ class LiveLoop {
   TickObserver* observer_ = nullptr;
   std::function<void(const char*)> thread_hook_;
   std::function<void(const WorkspaceModel&, const VisionContext&)> vision_hook_;
+  QueuedRecorder::MetadataList extra_metadata_;
 };
 
 }  // namespace deepnav

@@ -84,6 +84,13 @@ bool initRun(const ReplayOptions& o, const RecordingReader& reader, BenchRun* ru
   if (!run->vision.init(visionConfig(run->setup), error)) return false;
   run->context.init(robotFromCamera(run->setup));
   if (!run->core.init(run->setup, &run->writer, error)) return false;
+  // A run of `deepnav run` that started from its saved workspace (service.state_dir): its stage machine
+  // knew that, so the reproduction must too (the recorded vision results carry the map's state).
+  if (const auto* ws = reader.metadata("deepnav.workspace");
+      reader.hasSolutions() && !o.rerun && ws && ws->count("restored") && ws->at("restored") == "true") {
+    run->core.setWorkspaceRestored(true);
+    run->summary->workspace_restored = true;
+  }
   if (o.workspace_in.empty()) return true;
   if (!loadWorkspace(o.workspace_in, &run->vision.workspace(), error)) return false;
   run->core.setWorkspaceRestored(true);

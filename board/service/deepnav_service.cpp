@@ -83,8 +83,13 @@ bool DeepnavService::init(const ServiceOptions& options, std::string* error) {
   loop_ = std::make_unique<LiveLoop>();
   if (!publisher_.start(c.outputs, loop_.get(), error)) return false;
   if (live_ ? !openLiveDrivers(error) : !source_.open(board_.replay_path, error)) return false;
+  const bool keep_state = !c.service.state_dir.empty();
+  bool restore_workspace = false;
+  if (keep_state && !prepareWorkspaceState(c.service.state_dir, setup_, loop_.get(), &restore_workspace, error)) {
+    return false;
+  }
   if (!loop_->init(setup_, recording_path_, error)) return false;
-  if (!c.service.state_dir.empty() && !attachWorkspaceState(c.service.state_dir, loop_.get(), &workspace_saver_, error)) {
+  if (keep_state && !attachWorkspaceState(c.service.state_dir, restore_workspace, loop_.get(), &workspace_saver_, error)) {
     return false;
   }
   publisher_.chain(options.tick_observer);

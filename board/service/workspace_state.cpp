@@ -113,17 +113,41 @@ void WorkspaceSaver::onVisionPair(const WorkspaceModel& model, const VisionConte
   }
 }
 
-bool attachWorkspaceState(const std::string& state_dir, LiveLoop* loop, std::unique_ptr<WorkspaceSaver>* saver,
-                          std::string* error) {
+bool prepareWorkspaceState(const std::string& state_dir, const VehicleSetup& setup, LiveLoop* loop,
+                           bool* restorable, std::string* error) {
+  *restorable = false;
   if (!prepareStateDir(state_dir, error)) return false;
+  WorkspaceModel probe;
   std::string why;
-  if (loadWorkspaceState(state_dir, &loop->workspace(), &why)) {
-    loop->setWorkspaceRestored();
-    std::fprintf(stderr, "deepnav run: workspace restored from %s/workspace (%d occupied voxels): stage 2 once the "
-                 "markers fix the panel\n", state_dir.c_str(), loop->workspace().voxels());
+  if (!probe.init(visionConfig(setup).workspace, &why)) {
+    if (error) *error = "service.state_dir: " + why;
+    return false;
+  }
+  if (loadWorkspaceState(state_dir, &probe, &why)) {
+    std::error_code ec;
+    const std::string from = fs::canonical(state_dir + "/" + kCurrent, ec).string();
+    loop->addRecordingMetadata(kWorkspaceMetadata, {{"restored", "true"},
+                                                    {"from", ec ? state_dir + "/" + kCurrent : from},
+                                                    {"occupied_voxels", std::to_string(probe.voxels())}});
+    *restorable = true;
   } else if (!why.empty()) {
     std::fprintf(stderr, "deepnav run: service.state_dir: saved workspace not used, starting in stage 1: %s\n",
                  why.c_str());
+  }
+  return true;
+}
+
+bool attachWorkspaceState(const std::string& state_dir, bool restore, LiveLoop* loop,
+                          std::unique_ptr<WorkspaceSaver>* saver, std::string* error) {
+  if (restore) {
+    std::string why;
+    if (!loadWorkspaceState(state_dir, &loop->workspace(), &why)) {
+      if (error) *error = "service.state_dir: the saved workspace changed during start-up: " + why;
+      return false;
+    }
+    loop->setWorkspaceRestored();
+    std::fprintf(stderr, "deepnav run: workspace restored from %s/workspace (%d occupied voxels): stage 2 once the "
+                 "markers fix the panel\n", state_dir.c_str(), loop->workspace().voxels());
   }
   *saver = std::make_unique<WorkspaceSaver>(state_dir);
   WorkspaceSaver* s = saver->get();

@@ -5,6 +5,7 @@
 
 #include <Eigen/Geometry>
 
+#include "board/config/vehicle_setup.h"
 #include "board/loop/live_loop.h"
 #include "nav/types/nav_solution.h"
 #include "vision/pipeline/vision_context.h"
@@ -43,11 +44,19 @@ class WorkspaceSaver {
   std::atomic<int> failures_{0};
 };
 
-// Start-up of `service.state_dir` for `deepnav run`, between the loop's init() and start(): prepares the
-// directory (false: not writable, the start fails naming the key), restores a saved workspace into the
-// loop (one that cannot be read is reported on stderr and the run starts in stage 1: navigation must not
-// depend on it), and installs the saver as the loop's vision pair hook.
-bool attachWorkspaceState(const std::string& state_dir, LiveLoop* loop, std::unique_ptr<WorkspaceSaver>* saver,
-                          std::string* error);
+// Recording metadata of a run that started from a saved workspace ({restored: true, from, occupied_voxels}):
+// the bench replay reproduces such a run with its stage machine told so.
+inline constexpr const char* kWorkspaceMetadata = "deepnav.workspace";
+
+// Start-up of `service.state_dir` for `deepnav run`, before the loop's init(): prepares the directory
+// (false: not writable, the start fails naming the key) and checks the saved workspace; a readable one is
+// announced in the recording's metadata and *restorable set. One that cannot be read is reported on
+// stderr and the run starts in stage 1: navigation must not depend on it.
+bool prepareWorkspaceState(const std::string& state_dir, const VehicleSetup& setup, LiveLoop* loop,
+                           bool* restorable, std::string* error);
+// After the loop's init(): restores the workspace into the loop (when restorable) and installs the saver
+// as the loop's vision pair hook.
+bool attachWorkspaceState(const std::string& state_dir, bool restore, LiveLoop* loop,
+                          std::unique_ptr<WorkspaceSaver>* saver, std::string* error);
 
 }  // namespace deepnav

@@ -115,6 +115,16 @@ TEST(ServiceRestart, KilledInStage2ResumesInStage2FromTheSavedWorkspace) {
   ASSERT_GE(second.stage2_s, 0.0);
   EXPECT_LE(second.stage2_s, second.panel_fixed_s + 0.05);
   EXPECT_EQ(second.max_map_frames, 0);
+  // AND its recording says it started from the saved workspace, and replays bit for bit
+  ReplayOptions o2 = o;
+  o2.input_path = rec2;
+  o2.out_dir = testing::tempPath("restart_replay2");
+  ReplaySummary s2;
+  ASSERT_TRUE(runBenchReplay(o2, &s2, &error)) << error;
+  EXPECT_TRUE(s2.reproduce);
+  EXPECT_TRUE(s2.workspace_restored);
+  EXPECT_GT(s2.solutions_compared, 500u);
+  EXPECT_EQ(s2.mismatches, 0u);
   std::printf("run 1: workspace saved %.1f s after start (stage 2 at %.1f s of the dive); restart: stage 2 %.1f s "
               "after the start (panel fixed at %.1f s of the dive, stage 2 at %.1f s)\n",
               saved_after_s, first.stage2_s, restart_to_stage2_s, second.panel_fixed_s, second.stage2_s);
