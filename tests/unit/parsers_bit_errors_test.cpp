@@ -230,8 +230,8 @@ TEST_P(SingleBitErrors, EveryFlipIsRejectedAndTheNextFrameDecoded) {
 INSTANTIATE_TEST_SUITE_P(Parsers, SingleBitErrors,
                          ::testing::Values(Format::kPd0, Format::kNmea, Format::kWaterLinked, Format::kXsens));
 
-// Random bit errors, 20 seeds x 400 frames per format and rate: the plausibility checks never cost an
-// intact frame, and the stream's plausibility checks
+// Random bit errors, 20 seeds x 400 frames per format and rate: the plausibility checks cost (almost)
+// no intact frame, and the stream's plausibility checks
 // (FramePlausibility) accept no more damaged frames than the checksums alone. Frames hit by several
 // errors defeat the protocols' weak checks (NMEA's 8-bit XOR, PD0's 16-bit sum, Xbus's 8-bit sum,
 // even a CRC-8 passes 1 in 256 random patterns); the plausibility checks reject those whose damage
@@ -259,10 +259,13 @@ TEST_P(BitErrors, EveryIntactFrameDecodedAndPlausibilityRejectsDamagedFramesTheC
               name(format), ber, total.bit_errors, total.damaged, total.intact, total.intact_decoded,
               total.corrupted_passing_checksum, total.corrupted_accepted, total.intact_passing_checksum);
   EXPECT_GT(total.bit_errors, 0);
-  // The plausibility checks never cost an intact frame. (The Xbus framer alone misses 2 of 4993 intact
-  // Xsens frames at 1e-3 with these seeds, with or without them: a resynchronisation gap, open.)
-  EXPECT_EQ(total.intact_decoded, total.intact_passing_checksum);
-  EXPECT_GE(total.intact_decoded, total.intact - total.intact / 1000);
+  // The plausibility checks cost at most 0.1 % of the intact frames: a damaged frame they accept
+  // becomes the reference, and good frames after it can look like implausible steps until the
+  // reference is dropped (3 rejections in a row). Over 10^6 frames: 74 of 167707 intact PD0 frames at
+  // 1e-3 (none with these seeds). The Xbus framer alone misses 2 of 4993 intact Xsens frames at 1e-3
+  // with these seeds, with or without the checks (a resynchronisation gap, open).
+  EXPECT_GE(total.intact_decoded, total.intact_passing_checksum - total.intact_passing_checksum / 1000);
+  EXPECT_GE(total.intact_passing_checksum, total.intact - total.intact / 1000);
   EXPECT_LE(total.corrupted_accepted, total.corrupted_passing_checksum);
   EXPECT_LE(total.corrupted_accepted, 0.005 * total.damaged);
 }
