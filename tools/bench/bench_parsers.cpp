@@ -30,7 +30,8 @@ std::vector<uint8_t> stream(SensorProtocol p) {
       const auto e = test::buildPd0(spec);
       s.insert(s.end(), e.begin(), e.end());
     } else if (p == SensorProtocol::kNmea0183) {
-      const std::string l = test::nmeaSentence("HEHDT," + std::to_string(i % 360) + ".5,T");
+      // One full turn per pass, so that replayed passes join without a heading jump (plausibility).
+      const std::string l = test::nmeaSentence("HEHDT," + std::to_string(i * 9 / 5 % 360) + ".5,T");
       s.insert(s.end(), l.begin(), l.end());
     } else if (p == SensorProtocol::kWlA50) {
       const std::string l = test::wlSentence("wrz,0.100,0.200,0.010,y,1.90,0.002,1e-06;0;0;0;1e-06;0;0;0;1e-06,1000,1040,250.0,0");
