@@ -15,13 +15,15 @@ using deepnav::sim::Scenario;
 using deepnav::sim::SensorSimulator;
 using deepnav::sim::StereoRenderer;
 
-void renderTick(benchmark::State& state, const Scenario& scenario, const deepnav::CameraTick& tick, int channels) {
+void renderTick(benchmark::State& state, const Scenario& scenario, const deepnav::CameraTick& tick, int channels,
+                bool second_thread = false) {
   std::string error;
   StereoRenderer renderer;
   if (!renderer.init(scenario, 1, channels, &error)) {
     state.SkipWithError(error.c_str());
     return;
   }
+  if (second_thread) renderer.useSecondThread();
   deepnav::StereoFrame frame;
   deepnav::allocateStereoFrame(frame, scenario.camera.width_px, scenario.camera.height_px, channels);
   deepnav::sim::RenderTruth truth;
@@ -66,6 +68,13 @@ void BM_RenderSeabedGrey(benchmark::State& s) {
   renderTick(s, scenario, deepnav::sim::tickFacingFace(scenario, 1, 3.0, -0.15, 1.3, 0.0, 35.0), 1);
 }
 
+// The same view with the right camera on a second thread (StereoRenderer::useSecondThread, as
+// deepnav-sim renders): wall time per pair on the 2 cores.
+void BM_RenderSeabedGreyTwoThreads(benchmark::State& s) {
+  const Scenario scenario;
+  renderTick(s, scenario, deepnav::sim::tickFacingFace(scenario, 1, 3.0, -0.15, 1.3, 0.0, 35.0), 1, true);
+}
+
 void BM_RendererInit(benchmark::State& state) {
   const Scenario scenario;
   std::string error;
@@ -81,6 +90,7 @@ BENCHMARK(BM_RenderApproachGrey)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RenderDwellBgr)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RenderCornerGreyWithFish)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RenderSeabedGrey)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RenderSeabedGreyTwoThreads)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_RendererInit)->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -52,9 +52,9 @@ class Scene {
                  SceneHit* hit) const;
   // Unit normal in P at a hit (turned towards the ray, except on the seabed: up).
   Eigen::Vector3f normalAt(const SceneHit& hit) const;
-  // Albedo (BGR) at a hit; footprint2_m2 is the squared size of a pixel there, to choose the texture
-  // level.
-  Eigen::Vector3f albedoAt(const SceneHit& hit, const Eigen::Vector3f& o, const Eigen::Vector3f& d,
+  // Albedo (B, G, R in lanes 0-2, lane 3 is 0) at a hit; footprint2_m2 is the squared size of a pixel
+  // there, to choose the texture level.
+  Eigen::Vector4f albedoAt(const SceneHit& hit, const Eigen::Vector3f& o, const Eigen::Vector3f& d,
                            float footprint2_m2) const;
 
  private:
@@ -77,8 +77,9 @@ inline Eigen::Vector3f Scene::normalAt(const SceneHit& hit) const {
   return primitives_[hit.primitive].R_panel_local * hit.local.n;
 }
 
-inline Eigen::Vector3f Scene::albedoAt(const SceneHit& hit, const Eigen::Vector3f& o, const Eigen::Vector3f& d,
-                                float footprint2_m2) const {
+inline Eigen::Vector4f Scene::albedoAt(const SceneHit& hit, const Eigen::Vector3f& o, const Eigen::Vector3f& d,
+                                       float footprint2_m2) const {
+  const auto lanes = [](const Eigen::Vector3f& bgr) { return Eigen::Vector4f(bgr.x(), bgr.y(), bgr.z(), 0.0f); };
   if (hit.primitive == kSeabed) {
     const Eigen::Vector3f p = o + hit.t * d;
     return seabed_.albedoAt(p.x(), p.y(), footprint2_m2);
@@ -86,8 +87,8 @@ inline Eigen::Vector3f Scene::albedoAt(const SceneHit& hit, const Eigen::Vector3
   const Primitive& prim = primitives_[hit.primitive];
   const Material& m = materials_[prim.material];
   const Eigen::Vector3f& p = hit.local.p;
-  if (m.kind == MaterialKind::kSolid) return m.albedo_bgr;
-  if (hit.local.back) return m.back_albedo_bgr;
+  if (m.kind == MaterialKind::kSolid) return lanes(m.albedo_bgr);
+  if (hit.local.back) return lanes(m.back_albedo_bgr);
   const float u = m.kind == MaterialKind::kRectTexture ? (p.x() - m.u0_m) * m.texels_per_m
                                                        : std::atan2(p.y(), p.x()) * prim.hi.x() * m.texels_per_m;
   const float v = (m.v0_m - (m.kind == MaterialKind::kRectTexture ? p.y() : p.z())) * m.texels_per_m;

@@ -66,11 +66,6 @@ Eigen::Vector3f Seabed::normalAt(float x_m, float y_m) const {
   return normalOfSlope(hx, hy);
 }
 
-Eigen::Vector3f Seabed::albedoAt(float x_m, float y_m, float footprint2_m2) const {
-  constexpr float kTexelsPerM = kTextureTexels / kTexturePeriod_m;
-  return texture_.sample(x_m * kTexelsPerM, y_m * kTexelsPerM, footprint2_m2 * kTexelsPerM * kTexelsPerM);
-}
-
 bool Seabed::intersect(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t_min, float t_max, float* t,
                        Eigen::Vector3f* n, float hint_t) const {
   // Reciprocals once: divisions were most of the cost of a seabed pixel.

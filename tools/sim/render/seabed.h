@@ -34,7 +34,11 @@ class Seabed {
 
   float heightAt(float x_m, float y_m) const;
   Eigen::Vector3f normalAt(float x_m, float y_m) const;
-  Eigen::Vector3f albedoAt(float x_m, float y_m, float footprint2_m2) const;  // squared pixel size
+  // Squared pixel size; B, G, R in lanes 0-2 (TextureMap::sample). Inline: once per seabed pixel.
+  Eigen::Vector4f albedoAt(float x_m, float y_m, float footprint2_m2) const {
+    constexpr float kTexelsPerM = kTextureTexels / kTexturePeriod_m;
+    return texture_.sample(x_m * kTexelsPerM, y_m * kTexelsPerM, footprint2_m2 * kTexelsPerM * kTexelsPerM);
+  }
   float minHeight_m() const { return min_height_m_; }
   float maxHeight_m() const { return max_height_m_; }
 

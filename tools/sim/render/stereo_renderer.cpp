@@ -43,15 +43,21 @@ bool StereoRenderer::init(const Scenario& scenario, const MarkerLayout& layout, 
   if (has_port_) {
     if (!port_.init(scenario.camera, scenario.camera.port, error)) return false;
     port_radiance_.create(h, w, CV_32FC(channels));
-    pinhole_depth_m_.create(h, w, CV_32F);
+    pinhole_depth_left_m_.create(h, w, CV_32F);
+    pinhole_depth_right_m_.create(h, w, CV_32F);
   }
-  if (!view_.init(has_port_ ? port_.pinhole() : scenario.camera, channels, optics_, &scene_, error)) return false;
+  const CameraConfig& view_camera = has_port_ ? port_.pinhole() : scenario.camera;
+  if (!view_left_.init(view_camera, channels, optics_, &scene_, error) ||
+      !view_right_.init(view_camera, channels, optics_, &scene_, error))
+    return false;
   if (!sensor_.init(w, h, channels, optics_, seed)) {
     if (error) *error = "renderer: camera sensor init failed";
     return false;
   }
-  radiance_.assign(static_cast<std::size_t>(w) * h * channels, 0.0f);
-  depth_scratch_.assign(static_cast<std::size_t>(w) * h, 0.0f);
+  radiance_left_.assign(static_cast<std::size_t>(w) * h * channels, 0.0f);
+  radiance_right_.assign(static_cast<std::size_t>(w) * h * channels, 0.0f);
+  depth_scratch_left_.assign(static_cast<std::size_t>(w) * h, 0.0f);
+  depth_scratch_right_.assign(static_cast<std::size_t>(w) * h, 0.0f);
   initialised_ = true;
   return true;
 }
@@ -114,15 +120,34 @@ bool StereoRenderer::render(const CameraTick& tick, StereoFrame* frame, RenderTr
   scene_.setTime(static_cast<double>(tick.t_us) * 1e-6);
   const ViewPose left = leftView(tick), right = rightView(tick);
   const LampSet lamp_set = lamps(left);
-  float* depth_left = truth ? truth->depth_m.ptr<float>() : depth_scratch_.data();
-  view_.render(left, lamp_set, radiance_.data(), has_port_ ? pinhole_depth_m_.ptr<float>() : depth_left);
-  if (has_port_) throughPort(depth_left);
-  const float gain = sensor_.autoExposureGain(radiance_.data());
-  sensor_.expose(radiance_.data(), gain, frameKey(tick, 0), &frame->left);
-  float* depth_right = truth ? truth->right_depth_m.ptr<float>() : depth_scratch_.data();
-  view_.render(right, lamp_set, radiance_.data(), has_port_ ? pinhole_depth_m_.ptr<float>() : depth_right);
-  if (has_port_) throughPort(depth_right);
-  sensor_.expose(radiance_.data(), gain, frameKey(tick, 1), &frame->right);
+  float* depth_left = truth ? truth->depth_m.ptr<float>() : depth_scratch_left_.data();
+  float* depth_right = truth ? truth->right_depth_m.ptr<float>() : depth_scratch_right_.data();
+  view_left_.begin(left, lamp_set, radiance_left_.data(), has_port_ ? pinhole_depth_left_m_.ptr<float>() : depth_left);
+  view_right_.begin(right, lamp_set, radiance_right_.data(),
+                    has_port_ ? pinhole_depth_right_m_.ptr<float>() : depth_right);
+  if (right_thread_) {
+    RightViewThread& worker = *right_thread_;
+    {
+      const std::lock_guard<std::mutex> lock(worker.mutex);
+      ++worker.posted;
+    }
+    worker.wake.notify_all();
+    for (int row = 0; row < view_left_.tileRows(); ++row) view_left_.renderTileRow(row);
+    std::unique_lock<std::mutex> lock(worker.mutex);
+    worker.wake.wait(lock, [&] { return worker.done == worker.posted; });
+  } else {
+    for (int row = 0; row < view_left_.tileRows(); ++row) {
+      view_left_.renderTileRow(row);
+      view_right_.renderTileRow(row);
+    }
+  }
+  if (has_port_) {
+    throughPort(radiance_left_.data(), pinhole_depth_left_m_, depth_left);
+    throughPort(radiance_right_.data(), pinhole_depth_right_m_, depth_right);
+  }
+  const float gain = sensor_.autoExposureGain(radiance_left_.data());
+  sensor_.expose(radiance_left_.data(), gain, frameKey(tick, 0), &frame->left);
+  sensor_.expose(radiance_right_.data(), gain, frameKey(tick, 1), &frame->right);
   frame->t_us = tick.t_us;
   frame->sequence = tick.frame_index;
   frame->rectified = !has_port_;
@@ -138,11 +163,43 @@ bool StereoRenderer::render(const CameraTick& tick, StereoFrame* frame, RenderTr
   return true;
 }
 
-void StereoRenderer::throughPort(float* depth_m) {
+bool StereoRenderer::useSecondThread() {
+  if (!initialised_) return false;
+  if (right_thread_) return true;
+  right_thread_ = std::make_unique<RightViewThread>();
+  right_thread_->thread = std::thread([this] { rightViewLoop(); });
+  return true;
+}
+
+void StereoRenderer::rightViewLoop() {
+  RightViewThread& worker = *right_thread_;
+  std::unique_lock<std::mutex> lock(worker.mutex);
+  for (;;) {
+    worker.wake.wait(lock, [&] { return worker.stop || worker.posted != worker.done; });
+    if (worker.stop) return;
+    lock.unlock();
+    for (int row = 0; row < view_right_.tileRows(); ++row) view_right_.renderTileRow(row);
+    lock.lock();
+    worker.done = worker.posted;
+    worker.wake.notify_all();
+  }
+}
+
+StereoRenderer::~StereoRenderer() {
+  if (!right_thread_) return;
+  {
+    const std::lock_guard<std::mutex> lock(right_thread_->mutex);
+    right_thread_->stop = true;
+  }
+  right_thread_->wake.notify_all();
+  right_thread_->thread.join();
+}
+
+void StereoRenderer::throughPort(float* radiance_data, const cv::Mat& pinhole_depth_m, float* depth_m) {
   const int w = scenario_.camera.width_px, h = scenario_.camera.height_px;
-  cv::Mat radiance(h, w, CV_32FC(channels_), radiance_.data());
+  cv::Mat radiance(h, w, CV_32FC(channels_), radiance_data);
   cv::Mat depth(h, w, CV_32F, depth_m);
-  port_.resample(radiance, pinhole_depth_m_, port_radiance_, depth);
+  port_.resample(radiance, pinhole_depth_m, port_radiance_, depth);
   port_radiance_.copyTo(radiance);
 }
 

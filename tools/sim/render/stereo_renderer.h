@@ -1,6 +1,10 @@
 #pragma once
+#include <condition_variable>
 #include <cstdint>
+#include <memory>
+#include <mutex>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <Eigen/Core>
@@ -41,6 +45,12 @@ class StereoRenderer {
   // truth does not have the configured size and type.
   bool render(const CameraTick& tick, StereoFrame* frame, RenderTruth* truth);
 
+  // Renders the right view on a second thread while the calling thread renders the left one (the two
+  // views share only the read-only scene): the same images, bit for bit, in about half the wall time
+  // on two free cores. The thread is started here (call after init()) and lives with the renderer;
+  // render() still allocates nothing. False if the renderer is not initialised.
+  bool useSecondThread();
+
   // The knowledge base of the rendered panel (same as makePanelDescription(scenario, layout)).
   const PanelDescription& panel() const { return panel_; }
   const Scene& scene() const { return scene_; }
@@ -63,12 +73,12 @@ class StereoRenderer {
   PanelDescription panel_;
   Scene scene_;
   WaterOptics optics_;
-  ViewRenderer view_;
+  ViewRenderer view_left_, view_right_;  // rendered band by band alternately (ViewRenderer::begin)
   CameraSensor sensor_;
   std::uint64_t seed_ = 0;
   int channels_ = 1;
-  std::vector<float> radiance_;       // one view, then the next
-  std::vector<float> depth_scratch_;  // when the caller wants no truth
+  std::vector<float> radiance_left_, radiance_right_;
+  std::vector<float> depth_scratch_left_, depth_scratch_right_;  // when the caller wants no truth
   float last_gain_ = 1.0f;
   bool initialised_ = false;
   // camera.port flat: the view is rendered as a pinhole of focal x n_water, then resampled through the
@@ -76,9 +86,26 @@ class StereoRenderer {
   bool has_port_ = false;
   FlatPortResampler port_;
   cv::Mat port_radiance_;
-  cv::Mat pinhole_depth_m_;
+  cv::Mat pinhole_depth_left_m_, pinhole_depth_right_m_;
 
-  void throughPort(float* depth_m);
+  void throughPort(float* radiance, const cv::Mat& pinhole_depth_m, float* depth_m);
+
+  // The second thread: renders view_right_ (already begun) each time render() posts a frame.
+  struct RightViewThread {
+    std::thread thread;
+    std::mutex mutex;
+    std::condition_variable wake;
+    std::uint64_t posted = 0, done = 0;  // frames handed over and finished
+    bool stop = false;
+  };
+  std::unique_ptr<RightViewThread> right_thread_;
+  void rightViewLoop();
+
+ public:
+  ~StereoRenderer();
+  StereoRenderer() = default;
+  StereoRenderer(const StereoRenderer&) = delete;
+  StereoRenderer& operator=(const StereoRenderer&) = delete;
 };
 
 }  // namespace deepnav::sim

@@ -1,5 +1,7 @@
 #pragma once
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -23,17 +25,19 @@ class TextureMap {
   void buildMips();
 
   // Albedo at level-0 texel coordinates (u, v) for a pixel covering a square of footprint2_texels
-  // (level-0 texels, squared side): level floor(log2(side)), clamped.
-  Eigen::Vector3f sample(float u, float v, float footprint2_texels) const {
-    int level = 0;
-    const int last = static_cast<int>(levels_.size()) - 1;
-    while (footprint2_texels >= 4.0f && level < last) {
-      footprint2_texels *= 0.25f;
-      ++level;
-    }
-    return sampleLevel(level, u, v);
+  // (level-0 texels, squared side): level floor(log2(side)), clamped. B, G, R in lanes 0-2, lane 3 is 0
+  // (the shading works on 4-float vectors).
+  Eigen::Vector4f sample(float u, float v, float footprint2_texels) const {
+    return sampleLevel(levelFor(footprint2_texels), u, v);
   }
-  inline Eigen::Vector3f sampleLevel(int level, float u, float v) const;
+  // floor(log2(side)) = floor(e / 2) for footprint2 = m 2^e, m in [1, 2), read from the float's
+  // exponent bits instead of a loop of divisions by 4 (the same level: both are exact).
+  int levelFor(float footprint2_texels) const {
+    if (!(footprint2_texels >= 4.0f)) return 0;
+    const int exponent = static_cast<int>((std::bit_cast<std::uint32_t>(footprint2_texels) >> 23) & 0xFFu) - 127;
+    return std::min(exponent / 2, static_cast<int>(levels_.size()) - 1);
+  }
+  inline Eigen::Vector4f sampleLevel(int level, float u, float v) const;
   int levels() const { return static_cast<int>(levels_.size()); }
 
  private:
@@ -50,7 +54,13 @@ class TextureMap {
   bool wrap_ = false;
 };
 
-inline Eigen::Vector3f TextureMap::sampleLevel(int level, float u, float v) const {
+inline constexpr std::array<float, 256> kByteToFloat = [] {
+  std::array<float, 256> table{};
+  for (int i = 0; i < 256; ++i) table[i] = static_cast<float>(i);
+  return table;
+}();
+
+inline Eigen::Vector4f TextureMap::sampleLevel(int level, float u, float v) const {
   const Level& L = view_[level];
   const float x = u * L.scale - 0.5f, y = v * L.scale - 0.5f;
   // floor without a libm call (no SSE4.1 rounding in the x86-64 baseline): truncate, then fix negatives.
@@ -71,9 +81,10 @@ inline Eigen::Vector3f TextureMap::sampleLevel(int level, float u, float v) cons
   const float w01 = (1.0f - ax) * ay, w11 = ax * ay;
   const std::uint8_t *a = r0 + 3 * x0, *b = r0 + 3 * x1, *c = r1 + 3 * x0, *d = r1 + 3 * x1;
   constexpr float k = 1.0f / 255.0f;
-  return Eigen::Vector3f(w00 * a[0] + w10 * b[0] + w01 * c[0] + w11 * d[0],
-                         w00 * a[1] + w10 * b[1] + w01 * c[1] + w11 * d[1],
-                         w00 * a[2] + w10 * b[2] + w01 * c[2] + w11 * d[2]) * k;
+  const float* f = kByteToFloat.data();  // float(byte) by a load: cvtsi2ss stalls on its register
+  return Eigen::Vector4f(w00 * f[a[0]] + w10 * f[b[0]] + w01 * f[c[0]] + w11 * f[d[0]],
+                         w00 * f[a[1]] + w10 * f[b[1]] + w01 * f[c[1]] + w11 * f[d[1]],
+                         w00 * f[a[2]] + w10 * f[b[2]] + w01 * f[c[2]] + w11 * f[d[2]], 0.0f) * k;
 }
 
 }  // namespace deepnav::sim

@@ -22,26 +22,35 @@ bool ViewRenderer::init(const CameraConfig& camera, int channels, const WaterOpt
   optics_ = optics;
   // A lamp path plus the view path, both within range.
   water_.init(optics, 2.5f * kMaxRange_m);
-  backscatter_ = Eigen::Vector3f(optics.backscatter[0], optics.backscatter[1], optics.backscatter[2]);
+  backscatter_ = Eigen::Vector4f(optics.backscatter[0], optics.backscatter[1], optics.backscatter[2], 0.0f);
   const std::size_t n = scene->primitives().size();
   origin_local_.assign(n, Eigen::Vector3f::Zero());
   near_m_.assign(n, 0.0f);
   candidates_.reserve(n);
-  // 1 / |(x_n, y_n, 1)| per pixel: the ray's length per unit depth, used for distances and vignetting.
-  inv_ray_length_.resize(static_cast<std::size_t>(camera.width_px) * camera.height_px);
+  // |(x_n, y_n, 1)| per pixel and its inverse: the ray's length per unit depth, for distances and vignetting.
+  pixel_rays_.resize(static_cast<std::size_t>(camera.width_px) * camera.height_px);
   for (int v = 0; v < camera.height_px; ++v) {
     const double yn = (v - camera.cy_px) / camera.fy_px;
     for (int u = 0; u < camera.width_px; ++u) {
       const double xn = (u - camera.cx_px) / camera.fx_px;
-      inv_ray_length_[static_cast<std::size_t>(v) * camera.width_px + u] =
-          static_cast<float>(1.0 / std::sqrt(1.0 + xn * xn + yn * yn));
+      const double length = std::sqrt(1.0 + xn * xn + yn * yn);
+      pixel_rays_[static_cast<std::size_t>(v) * camera.width_px + u] = {static_cast<float>(1.0 / length),
+                                                                         static_cast<float>(length)};
     }
   }
   return true;
 }
 
 void ViewRenderer::render(const ViewPose& pose, const LampSet& lamps, float* radiance, float* depth_m) {
+  begin(pose, lamps, radiance, depth_m);
+  for (int row = 0; row < tileRows(); ++row) renderTileRow(row);
+}
+
+void ViewRenderer::begin(const ViewPose& pose, const LampSet& lamps, float* radiance, float* depth_m) {
   const auto& prims = scene_->primitives();
+  lamps_ = lamps;
+  radiance_ = radiance;
+  depth_m_ = depth_m;
   origin_ = pose.p_cam_in_panel_m;
   const float relief_top_m = scene_->seabed().maxHeight_m();
   seabed_top_m_ = origin_.z() > relief_top_m ? relief_top_m : INFINITY;
@@ -54,13 +63,15 @@ void ViewRenderer::render(const ViewPose& pose, const LampSet& lamps, float* rad
   ray_dv_ = pose.R_panel_cam.col(1) / fy;
   ray_base_ = pose.R_panel_cam.col(2) - static_cast<float>(camera_.cx_px) * ray_du_ -
               static_cast<float>(camera_.cy_px) * ray_dv_;
+}
+
+void ViewRenderer::renderTileRow(int row) {
   const int w = camera_.width_px, h = camera_.height_px;
-  for (int v0 = 0; v0 < h; v0 += kTile) {
-    for (int u0 = 0; u0 < w; u0 += kTile) {
-      const int u1 = std::min(u0 + kTile, w), v1 = std::min(v0 + kTile, h);
-      listCandidates(tileCone(u0, v0, u1, v1));
-      renderTile(u0, v0, u1, v1, lamps, radiance, depth_m);
-    }
+  const int v0 = row * kTile, v1 = std::min(v0 + kTile, h);
+  for (int u0 = 0; u0 < w; u0 += kTile) {
+    const int u1 = std::min(u0 + kTile, w);
+    listCandidates(tileCone(u0, v0, u1, v1));
+    renderTile(u0, v0, u1, v1, lamps_, radiance_, depth_m_);
   }
 }
 
@@ -110,7 +121,8 @@ void ViewRenderer::renderTile(int u0, int v0, int u1, int v1, const LampSet& lam
   for (int v = v0; v < v1; ++v) {
     float seabed_hint_t = 0.0f;  // the previous pixel's seabed hit: Newton's first guess for this one
     for (int u = u0; u < u1; ++u) {
-      const float inv_len = inv_ray_length_[static_cast<std::size_t>(v) * w + u];
+      const PixelRay& ray = pixel_rays_[static_cast<std::size_t>(v) * w + u];
+      const float inv_len = ray.inv_length;
       const Eigen::Vector3f d = pixelRay(u, v);
       float t_best = kMaxRange_m * inv_len;
       hit.primitive = -2;
@@ -134,10 +146,10 @@ void ViewRenderer::renderTile(int u0, int v0, int u1, int v1, const LampSet& lam
       }
       seabed_hint_t = hit.primitive == Scene::kSeabed ? t_best : 0.0f;
       const std::size_t pixel = static_cast<std::size_t>(v) * w + u;
-      Eigen::Vector3f L = backscatter_;
+      Eigen::Vector4f L = backscatter_;
       if (hit.primitive != -2) {
         hit.t = t_best;
-        L = shade(hit, d, inv_len, lamps);
+        L = shade(hit, d, ray, lamps);
         depth_m[pixel] = t_best;
       } else {
         depth_m[pixel] = 0.0f;
@@ -154,17 +166,17 @@ void ViewRenderer::renderTile(int u0, int v0, int u1, int v1, const LampSet& lam
   }
 }
 
-Eigen::Vector3f ViewRenderer::shade(const SceneHit& hit, const Eigen::Vector3f& d, float inv_ray_length,
+Eigen::Vector4f ViewRenderer::shade(const SceneHit& hit, const Eigen::Vector3f& d, const PixelRay& ray,
                                     const LampSet& lamps) const {
-  const float distance = hit.t / inv_ray_length;
+  const float distance = hit.t * ray.length;
   const Eigen::Vector3f p = origin_ + hit.t * d;
   const Eigen::Vector3f n = scene_->normalAt(hit);
   // A pixel's footprint at the hit, widened for oblique views: fronto / sqrt(cos), the geometric mean
   // of its two axes (texture level choice only, so the square root is left to the comparison).
   const float fronto_m = hit.t * inv_fx_;
-  const float cos_view = std::max(std::abs(n.dot(d)) * inv_ray_length, 0.1f);
-  const Eigen::Vector3f albedo = scene_->albedoAt(hit, origin_, d, fronto_m * fronto_m / cos_view);
-  Eigen::Vector3f E = Eigen::Vector3f::Zero();
+  const float cos_view = std::max(std::abs(n.dot(d)) * ray.inv_length, 0.1f);
+  const Eigen::Vector4f albedo = scene_->albedoAt(hit, origin_, d, fronto_m * fronto_m / cos_view);
+  Eigen::Vector4f E = Eigen::Vector4f::Zero();
   for (const Eigen::Vector3f& lamp : lamps.p_lamp_in_panel_m) {
     const Eigen::Vector3f l = lamp - p;
     const float n_l = n.dot(l), axis_l = -lamps.axis_in_panel.dot(l);
@@ -175,7 +187,7 @@ Eigen::Vector3f ViewRenderer::shade(const SceneHit& hit, const Eigen::Vector3f& 
     const float irradiance = optics_.lamp_intensity * n_l * axis_l / (dl2 * dl2);
     E += irradiance * water_.transmittance(dl + distance);
   }
-  const Eigen::Vector3f veil = Eigen::Vector3f::Ones() - water_.transmittance(distance);
+  const Eigen::Vector4f veil = Eigen::Vector4f::Ones() - water_.transmittance(distance);
   return albedo.cwiseProduct(E) + backscatter_.cwiseProduct(veil);
 }
 

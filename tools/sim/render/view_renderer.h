@@ -42,6 +42,13 @@ class ViewRenderer {
             std::string* error);
   // radiance: width * height * channels floats; depth_m: width * height floats (0 = no hit).
   void render(const ViewPose& pose, const LampSet& lamps, float* radiance, float* depth_m);
+  // The same in steps: begin() sets up the frame, then each renderTileRow(r), r < tileRows(), draws the
+  // 16-pixel band of rows [16 r, 16 r + 16). The stereo renderer alternates the bands of its two cameras:
+  // both see nearly the same texels and relief cells, which then come from the cache the second time
+  // (3 MB of seabed texture, 2 MB per face, do not stay cached over a whole view).
+  void begin(const ViewPose& pose, const LampSet& lamps, float* radiance, float* depth_m);
+  int tileRows() const { return (camera_.height_px + kTile - 1) / kTile; }
+  void renderTileRow(int row);
 
  private:
   struct Cone {
@@ -60,7 +67,14 @@ class ViewRenderer {
   Cone tileCone(int u0, int v0, int u1, int v1) const;
   void listCandidates(const Cone& cone);
   void renderTile(int u0, int v0, int u1, int v1, const LampSet& lamps, float* radiance, float* depth_m);
-  Eigen::Vector3f shade(const SceneHit& hit, const Eigen::Vector3f& d, float inv_ray_length,
+  // Per pixel, pose-independent: the ray's length per unit depth |(x_n, y_n, 1)| (a hit's distance is
+  // depth times it) and its inverse (cos of the angle off the axis, for the vignetting and the view angle).
+  struct PixelRay {
+    float inv_length;
+    float length;
+  };
+  // Radiance B, G, R in lanes 0-2 (4-float vectors: one SSE operation for the three channels).
+  Eigen::Vector4f shade(const SceneHit& hit, const Eigen::Vector3f& d, const PixelRay& ray,
                         const LampSet& lamps) const;
 
   CameraConfig camera_;
@@ -69,9 +83,12 @@ class ViewRenderer {
   const Scene* scene_ = nullptr;
   WaterOptics optics_;
   WaterPath water_;
-  Eigen::Vector3f backscatter_ = Eigen::Vector3f::Zero();
-  std::vector<float> inv_ray_length_;  // per pixel, 1 / |(x_n, y_n, 1)|
+  Eigen::Vector4f backscatter_ = Eigen::Vector4f::Zero();  // B_inf, lanes 0-2
+  std::vector<PixelRay> pixel_rays_;
   // Per frame.
+  LampSet lamps_;
+  float* radiance_ = nullptr;
+  float* depth_m_ = nullptr;
   Eigen::Vector3f origin_ = Eigen::Vector3f::Zero();
   float seabed_top_m_ = 0.0f;  // a ray from above the relief still above it at its hit never met it
   Eigen::Vector3f ray_base_, ray_du_, ray_dv_;  // d(u, v) = base + u du + v dv

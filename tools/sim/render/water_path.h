@@ -11,6 +11,8 @@ namespace deepnav::sim {
 
 // Transmittance of a water path, exp(-beta_c x) per channel, from a table (1 cm steps, linear
 // interpolation, relative error < 1e-5 for beta <= 2 /m): the shading needs three of them per pixel.
+// Channels B, G, R in lanes 0-2 of a 4-float vector (lane 3 is 1), so that one SSE operation
+// interpolates all three.
 class WaterPath {
  public:
   void init(const WaterOptics& optics, float max_length_m) {
@@ -18,10 +20,11 @@ class WaterPath {
     table_.resize(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i) {
       for (int c = 0; c < 3; ++c) table_[i][c] = std::exp(-optics.attenuation_per_m[c] * (i * kStep_m));
+      table_[i][3] = 1.0f;
     }
     last_ = static_cast<float>(n - 2);
   }
-  Eigen::Vector3f transmittance(float x_m) const {
+  Eigen::Vector4f transmittance(float x_m) const {
     const float f = std::min(std::max(x_m, 0.0f) * (1.0f / kStep_m), last_);
     const int i = static_cast<int>(f);
     const float a = f - static_cast<float>(i);
@@ -30,7 +33,7 @@ class WaterPath {
 
  private:
   static constexpr float kStep_m = 0.01f;
-  std::vector<Eigen::Vector3f> table_;
+  std::vector<Eigen::Vector4f> table_;
   float last_ = 0.0f;
 };
 
