@@ -38,7 +38,7 @@ struct SoakResult {
   double wall_s = 0.0;
   double baseline_rss_kib = 0.0;     // highest RSS during the warm-up dives
   double after_rss_kib = 0.0;        // highest RSS after them
-  double growth_kib = 0.0;           // mean peak RSS of the last third of the post-warm-up dives - the first third
+  double growth_kib = 0.0;           // lowest dive peak RSS of the second half after warm-up - of the first half
   double end_rss_slope_kib_per_h = 0.0;  // least-squares trend of end RSS over the post-warm-up dives
   bool growth_ok = false;
   std::string error;
