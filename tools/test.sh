@@ -7,5 +7,6 @@ cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_TOOLCHAIN_FILE=t
 cmake --build build -j"$(nproc)"
 ctest --test-dir build --output-on-failure -j"$(nproc)" --timeout 600
 # Sanitizer stage (issue 9, tools/sanitize/README.md): the whole suite under ASan+UBSan, the threaded
-# runtime under TSan; any finding fails. DEEPNAV_SANITIZERS=0 skips it (quick local runs).
-if [[ "${DEEPNAV_SANITIZERS:-1}" != 0 ]]; then tools/sanitize/run.sh; fi
+# runtime under TSan; any finding fails. Opt-in (DEEPNAV_SANITIZERS=1) until its time on a clean 2-core
+# machine is measured to fit the CI budget beside the Release stage.
+if [[ "${DEEPNAV_SANITIZERS:-0}" != 0 ]]; then tools/sanitize/run.sh; fi
