@@ -34,6 +34,10 @@ namespace deepnav::sim {
 //   renderer.render(sim.cameraAt(t_us), &frame, &truth);
 class StereoRenderer {
  public:
+  StereoRenderer() = default;
+  StereoRenderer(const StereoRenderer&) = delete;  // owns the optional second thread
+  StereoRenderer& operator=(const StereoRenderer&) = delete;
+  ~StereoRenderer();  // stops the second thread
   // channels: 1 (grey, CV_8UC1) or 3 (BGR, CV_8UC3), as the board's camera.channels.
   bool init(const Scenario& scenario, std::uint64_t seed, int channels, std::string* error);
   bool init(const Scenario& scenario, const MarkerLayout& layout, std::uint64_t seed, int channels,
@@ -100,12 +104,6 @@ class StereoRenderer {
   };
   std::unique_ptr<RightViewThread> right_thread_;
   void rightViewLoop();
-
- public:
-  ~StereoRenderer();
-  StereoRenderer() = default;
-  StereoRenderer(const StereoRenderer&) = delete;
-  StereoRenderer& operator=(const StereoRenderer&) = delete;
 };
 
 }  // namespace deepnav::sim
