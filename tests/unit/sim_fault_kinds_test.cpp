@@ -104,7 +104,9 @@ TEST(SimFaultKinds, IntermittentAlternatesBurstsAndSilences) {
   for (const SimEvent& e : b) {
     if (!inWindow(e.t_us, 5.0, 11.0)) continue;
     ++kept;
-    EXPECT_LT(std::fmod(usToS(e.t_us) - 5.0, 2.0), 0.5 + 1e-9) << e.t_us;
+    // Phase in integer microseconds: in floating point, t * 1e-6 - 5.0 at t = 7 s is 2.0 on x86-64 but
+    // 1.9999999999999998 on aarch64 (g++ contracts it into one fused multiply-add there).
+    EXPECT_LE((e.t_us - 5'000'000) % 2'000'000, 500'000) << e.t_us;
   }
   EXPECT_EQ(kept, 15);  // 3 bursts of 0.5 s at 10 Hz
 }
