@@ -152,7 +152,8 @@ bool Seabed::refine(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float lo
   // Newton step shorter than 0.5 mm along the ray (its residual is second order: micrometres).
   // The normal comes from the slope of the last evaluation (within 0.5 mm of the hit: same patch,
   // or a slope change of a few thousandths across a cell edge).
-  const float step_tolerance = 5e-4f / d.norm();
+  // |step| < 0.5 mm / |d|, squared: no square root or division on the per-pixel path.
+  const float step_tolerance2 = 2.5e-7f / d.squaredNorm();
   float tm = start;
   float hx = 0.0f, hy = 0.0f;
   for (int k = 0; k < kRefineIterations; ++k) {
@@ -163,7 +164,7 @@ bool Seabed::refine(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float lo
     (f > 0.0f ? lo : hi) = tm;
     const float slope = d.z() - hx * d.x() - hy * d.y();
     const float next = slope < 0.0f ? tm - f / slope : 0.5f * (lo + hi);
-    if (std::abs(next - tm) < step_tolerance) {  // a tiny Newton step leaves a negligible residual
+    if ((next - tm) * (next - tm) < step_tolerance2) {  // a tiny Newton step leaves a negligible residual
       tm = next;
       break;
     }

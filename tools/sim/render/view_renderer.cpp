@@ -176,16 +176,21 @@ Eigen::Vector4f ViewRenderer::shade(const SceneHit& hit, const Eigen::Vector3f& 
   const float fronto_m = hit.t * inv_fx_;
   const float cos_view = std::max(std::abs(n.dot(d)) * ray.inv_length, 0.1f);
   const Eigen::Vector4f albedo = scene_->albedoAt(hit, origin_, d, fronto_m * fronto_m / cos_view);
+  // I cos(theta_s) cos(phi) / d_l^2 per lamp, with both cosines = dot / d_l; one division for both
+  // lamps (1 / (q0 q1) times the other's q).
+  float n_l[2], axis_l[2], dl2[2];
+  for (int k = 0; k < 2; ++k) {
+    const Eigen::Vector3f l = lamps.p_lamp_in_panel_m[k] - p;
+    n_l[k] = n.dot(l), axis_l[k] = -lamps.axis_in_panel.dot(l), dl2[k] = l.squaredNorm();
+  }
+  const float q0 = dl2[0] * dl2[0], q1 = dl2[1] * dl2[1];
+  const float inv_q01 = 1.0f / (q0 * q1);
+  const float inv_q[2] = {q1 * inv_q01, q0 * inv_q01};
   Eigen::Vector4f E = Eigen::Vector4f::Zero();
-  for (const Eigen::Vector3f& lamp : lamps.p_lamp_in_panel_m) {
-    const Eigen::Vector3f l = lamp - p;
-    const float n_l = n.dot(l), axis_l = -lamps.axis_in_panel.dot(l);
-    if (n_l <= 0.0f || axis_l <= 0.0f) continue;
-    const float dl2 = l.squaredNorm();
-    const float dl = std::sqrt(dl2);
-    // I cos(theta_s) cos(phi) / d_l^2 with both cosines = dot / d_l.
-    const float irradiance = optics_.lamp_intensity * n_l * axis_l / (dl2 * dl2);
-    E += irradiance * water_.transmittance(dl + distance);
+  for (int k = 0; k < 2; ++k) {
+    if (n_l[k] <= 0.0f || axis_l[k] <= 0.0f) continue;
+    const float irradiance = optics_.lamp_intensity * n_l[k] * axis_l[k] * inv_q[k];
+    E += irradiance * water_.transmittance(std::sqrt(dl2[k]) + distance);
   }
   const Eigen::Vector4f veil = Eigen::Vector4f::Ones() - water_.transmittance(distance);
   return albedo.cwiseProduct(E) + backscatter_.cwiseProduct(veil);
