@@ -13,25 +13,11 @@ namespace deepnav::sim {
 namespace {
 
 using test::ofStream;
+using test::fault;
 using test::runAll;
+using test::withFault;
 
 constexpr std::uint64_t kSeed = 33;
-
-Scenario withFault(const FaultSpec& fault) {
-  Scenario s;
-  s.duration_s = 20.0;
-  s.faults.push_back(fault);
-  return s;
-}
-
-FaultSpec fault(SimStream stream, FaultKind kind, double t_start_s, double t_end_s) {
-  FaultSpec f;
-  f.stream = stream;
-  f.kind = kind;
-  f.t_start_s = t_start_s;
-  f.t_end_s = t_end_s;
-  return f;
-}
 
 std::vector<SimEvent> cleanStream(SimStream stream) {
   return ofStream(runAll(withFault(fault(SimStream::kImu, FaultKind::kDropout, 99, 100)), kSeed), stream);

@@ -15,25 +15,11 @@ namespace {
 
 using test::bitEqual;
 using test::ofStream;
+using test::fault;
 using test::runAll;
+using test::withFault;
 
 constexpr std::uint64_t kSeed = 21;
-
-Scenario withFault(const FaultSpec& fault) {
-  Scenario s;
-  s.duration_s = 20.0;
-  s.faults.push_back(fault);
-  return s;
-}
-
-FaultSpec fault(SimStream stream, FaultKind kind, double t_start_s, double t_end_s) {
-  FaultSpec f;
-  f.stream = stream;
-  f.kind = kind;
-  f.t_start_s = t_start_s;
-  f.t_end_s = t_end_s;
-  return f;
-}
 
 bool inWindow(TimeUs t_us, double start_s, double end_s) { return t_us >= sToUs(start_s) && t_us < sToUs(end_s); }
 

@@ -67,4 +67,21 @@ inline std::vector<SimEvent> ofStream(const std::vector<SimEvent>& events, SimSt
   return out;
 }
 
+// A 20 s default scenario with one fault.
+inline Scenario withFault(const FaultSpec& fault) {
+  Scenario s;
+  s.duration_s = 20.0;
+  s.faults.push_back(fault);
+  return s;
+}
+
+inline FaultSpec fault(SimStream stream, FaultKind kind, double t_start_s, double t_end_s) {
+  FaultSpec f;
+  f.stream = stream;
+  f.kind = kind;
+  f.t_start_s = t_start_s;
+  f.t_end_s = t_end_s;
+  return f;
+}
+
 }  // namespace deepnav::sim::test
