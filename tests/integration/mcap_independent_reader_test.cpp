@@ -6,6 +6,7 @@
 // executable without touching other tests): Writer::write() must not allocate in steady state.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <atomic>
 #include <cstdio>
@@ -48,8 +49,10 @@ namespace {
 const std::string kSourceDir = DEEPNAV_SOURCE_DIR;
 const std::string kCheckScript = kSourceDir + "/tools/mcapcheck/check.mjs";
 
+// ctest runs each parameterised case as its own process, in parallel: the pid keeps their files apart.
 std::string tempPath(const std::string& name) {
-  return (std::filesystem::temp_directory_path() / ("deepnav_mcapcheck_" + name)).string();
+  const std::string file = "deepnav_mcapcheck_" + std::to_string(::getpid()) + "_" + name;
+  return (std::filesystem::temp_directory_path() / file).string();
 }
 
 bool independentReaderAvailable(std::string* why) {
