@@ -73,13 +73,19 @@ class Scene {
 
 // Inline: called once per pixel.
 inline Eigen::Vector3f Scene::normalAt(const SceneHit& hit) const {
-  if (hit.primitive == kSeabed) return hit.local.n;  // filled by Seabed::intersect
+  if (hit.primitive == kSeabed) {  // filled by Seabed::intersect
+    // Component by component: Seabed::refine stored them as three floats, and a whole-vector copy (an
+    // 8-byte load over two of them) cannot be store-forwarded (a stall of a dozen cycles per pixel).
+    const Eigen::Vector3f& n = hit.local.n;
+    return Eigen::Vector3f(n.x(), n.y(), n.z());
+  }
   return primitives_[hit.primitive].R_panel_local * hit.local.n;
 }
 
 inline Eigen::Vector4f Scene::albedoAt(const SceneHit& hit, const Eigen::Vector3f& o, const Eigen::Vector3f& d,
                                        float footprint2_m2) const {
-  const auto lanes = [](const Eigen::Vector3f& bgr) { return Eigen::Vector4f(bgr.x(), bgr.y(), bgr.z(), 0.0f); };
+  // In a register (see TextureMap::sampleLevel: no narrow stores read back by a wide load).
+  const auto lanes = [](const Eigen::Vector3f& bgr) { return toVector4f(Float4{bgr.x(), bgr.y(), bgr.z(), 0.0f}); };
   if (hit.primitive == kSeabed) {
     const Eigen::Vector3f p = o + hit.t * d;
     return seabed_.albedoAt(p.x(), p.y(), footprint2_m2);

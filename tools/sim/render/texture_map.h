@@ -4,6 +4,7 @@
 #include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <vector>
 
 #include <Eigen/Core>
@@ -54,6 +55,16 @@ class TextureMap {
   bool wrap_ = false;
 };
 
+// Four floats in one register (SSE on x86-64, NEON on aarch64), GCC's generic vector extension.
+using Float4 = float __attribute__((vector_size(16)));
+
+// Register to Eigen: one 16-byte copy, which the compiler keeps in the register once inlined.
+inline Eigen::Vector4f toVector4f(Float4 v) {
+  Eigen::Vector4f e;
+  std::memcpy(e.data(), &v, sizeof(v));
+  return e;
+}
+
 inline constexpr std::array<float, 256> kByteToFloat = [] {
   std::array<float, 256> table{};
   for (int i = 0; i < 256; ++i) table[i] = static_cast<float>(i);
@@ -82,9 +93,12 @@ inline Eigen::Vector4f TextureMap::sampleLevel(int level, float u, float v) cons
   const std::uint8_t *a = r0 + 3 * x0, *b = r0 + 3 * x1, *c = r1 + 3 * x0, *d = r1 + 3 * x1;
   constexpr float k = 1.0f / 255.0f;
   const float* f = kByteToFloat.data();  // float(byte) by a load: cvtsi2ss stalls on its register
-  return Eigen::Vector4f(w00 * f[a[0]] + w10 * f[b[0]] + w01 * f[c[0]] + w11 * f[d[0]],
-                         w00 * f[a[1]] + w10 * f[b[1]] + w01 * f[c[1]] + w11 * f[d[1]],
-                         w00 * f[a[2]] + w10 * f[b[2]] + w01 * f[c[2]] + w11 * f[d[2]], 0.0f) * k;
+  // Built in a register: Eigen's constructor from four scalars went through the stack (4- and 8-byte
+  // stores read back by one 16-byte load, which cannot be store-forwarded: a stall per fetch).
+  const Float4 bgr = {w00 * f[a[0]] + w10 * f[b[0]] + w01 * f[c[0]] + w11 * f[d[0]],
+                      w00 * f[a[1]] + w10 * f[b[1]] + w01 * f[c[1]] + w11 * f[d[1]],
+                      w00 * f[a[2]] + w10 * f[b[2]] + w01 * f[c[2]] + w11 * f[d[2]], 0.0f};
+  return toVector4f(bgr * k);
 }
 
 }  // namespace deepnav::sim
