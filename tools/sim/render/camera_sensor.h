@@ -32,6 +32,10 @@ class CameraSensor {
   float autoExposureGain(const float* radiance) const;
 
  private:
+  void blurRow(const float* in, float* out) const;
+  void exposeRow(const float* up, const float* mid, const float* down, const float* noise, float gain,
+                 std::uint8_t* out) const;
+
   int width_ = 0, height_ = 0, channels_ = 1;
   float read_var_ = 0.0f, shot_ = 0.0f;
   std::vector<float> blurred_rows_;  // the horizontal pass

@@ -4,11 +4,12 @@
 #include <bit>
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <vector>
 
 #include <Eigen/Core>
 #include <opencv2/core.hpp>
+
+#include "tools/sim/render/float4.h"
 
 namespace deepnav::sim {
 
@@ -54,16 +55,6 @@ class TextureMap {
   std::vector<float> scale_;  // level-L texels per level-0 texel (both axes; sizes halve exactly or clamp)
   bool wrap_ = false;
 };
-
-// Four floats in one register (SSE on x86-64, NEON on aarch64), GCC's generic vector extension.
-using Float4 = float __attribute__((vector_size(16)));
-
-// Register to Eigen: one 16-byte copy, which the compiler keeps in the register once inlined.
-inline Eigen::Vector4f toVector4f(Float4 v) {
-  Eigen::Vector4f e;
-  std::memcpy(e.data(), &v, sizeof(v));
-  return e;
-}
 
 inline constexpr std::array<float, 256> kByteToFloat = [] {
   std::array<float, 256> table{};
