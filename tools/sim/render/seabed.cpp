@@ -68,30 +68,21 @@ Eigen::Vector3f Seabed::normalAt(float x_m, float y_m) const {
 
 bool Seabed::intersect(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t_min, float t_max, float* t,
                        Eigen::Vector3f* n, float hint_t) const {
-  // Reciprocals once: divisions were most of the cost of a seabed pixel.
-  const Eigen::Vector3f inv(d.x() != 0.0f ? 1.0f / d.x() : INFINITY, d.y() != 0.0f ? 1.0f / d.y() : INFINITY,
-                            d.z() != 0.0f ? 1.0f / d.z() : INFINITY);
+  // Reciprocal once: divisions were most of the cost of a seabed pixel.
+  const float inv_z = d.z() != 0.0f ? 1.0f / d.z() : INFINITY;
   // The part of the ray inside the slab [min, max height].
   float t0 = t_min, t1 = t_max;
   if (d.z() < 0.0f) {
-    t0 = std::max(t0, (max_height_m_ - o.z()) * inv.z());
-    t1 = std::min(t1, (min_height_m_ - o.z()) * inv.z());
+    t0 = std::max(t0, (max_height_m_ - o.z()) * inv_z);
+    t1 = std::min(t1, (min_height_m_ - o.z()) * inv_z);
   } else if (o.z() > max_height_m_) {
     return false;
   }
   if (!(t0 < t1)) return false;
   // The part of it over the relief square; elsewhere the seabed is the plane z = 0.
   float s0 = t0, s1 = t1;
-  for (int k = 0; k < 2; ++k) {
-    if (d[k] == 0.0f) {
-      if (std::abs(o[k]) >= kHalfExtent_m) s0 = s1 = t1;
-      continue;
-    }
-    float a = (-kHalfExtent_m - o[k]) * inv[k], b = (kHalfExtent_m - o[k]) * inv[k];
-    if (a > b) std::swap(a, b);
-    s0 = std::max(s0, a), s1 = std::min(s1, b);
-  }
-  const float t_plane = d.z() != 0.0f ? -o.z() * inv.z() : INFINITY;
+  if (!insideSquare(o, d, t0) || !insideSquare(o, d, t1)) clipToSquare(o, d, &s0, &s1);
+  const float t_plane = d.z() != 0.0f ? -o.z() * inv_z : INFINITY;
   const auto flat = [&]() {
     *t = t_plane;
     if (n) *n = Eigen::Vector3f::UnitZ();
@@ -107,6 +98,26 @@ bool Seabed::intersect(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float
   return false;
 }
 
+bool Seabed::insideSquare(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t) {
+  // 1 cm inside: far beyond the rounding of the clipping, which then would leave [s0, s1] unchanged
+  // (the square is convex: both ends inside, the whole segment inside); saves its two divisions.
+  constexpr float kInside_m = kHalfExtent_m - 0.01f;
+  return std::abs(o.x() + t * d.x()) < kInside_m && std::abs(o.y() + t * d.y()) < kInside_m;
+}
+
+void Seabed::clipToSquare(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float* s0, float* s1) {
+  for (int k = 0; k < 2; ++k) {
+    if (d[k] == 0.0f) {
+      if (std::abs(o[k]) >= kHalfExtent_m) *s0 = *s1;  // parallel to the square, outside: empty
+      continue;
+    }
+    const float inv = 1.0f / d[k];
+    float a = (-kHalfExtent_m - o[k]) * inv, b = (kHalfExtent_m - o[k]) * inv;
+    if (a > b) std::swap(a, b);
+    *s0 = std::max(*s0, a), *s1 = std::min(*s1, b);
+  }
+}
+
 bool Seabed::march(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t0, float t1, float hint_t, float* t,
                    Eigen::Vector3f* n) const {
   const auto hitAt = [&](float t_hit) {
@@ -114,10 +125,7 @@ bool Seabed::march(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t0,
     if (n) *n = normalAt(o.x() + t_hit * d.x(), o.y() + t_hit * d.y());
     return true;
   };
-  const float horizontal = std::sqrt(d.x() * d.x() + d.y() * d.y());
-  const float inv_horizontal = horizontal > 1e-6f ? 1.0f / horizontal : INFINITY;
-  const float descent = -d.z() * inv_horizontal;  // metres down per horizontal metre
-  if (descent > max_slope_) {
+  if (descendsSteeply(d)) {
     // The ray drops faster than the relief can rise: ray z - h decreases monotonically, so [t0, t1]
     // holds at most one crossing. At the slab's entry (z = max height) the ray is above the relief and
     // at its exit (z = min height) below: no evaluation needed there; elsewhere (clipped by a nearer
@@ -128,6 +136,9 @@ bool Seabed::march(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t0,
     const float start = hint_t > t0 && hint_t < t1 ? hint_t : std::clamp(-o.z() / d.z(), t0, t1);
     return refine(o, d, t0, t1, start, t, n);
   }
+  const float horizontal = std::sqrt(d.x() * d.x() + d.y() * d.y());
+  const float inv_horizontal = horizontal > 1e-6f ? 1.0f / horizontal : INFINITY;
+  const float descent = -d.z() * inv_horizontal;  // metres down per horizontal metre
   const float length = std::sqrt(horizontal * horizontal + d.z() * d.z());
   // Over a horizontal distance s the gap between ray and relief shrinks by at most (descent + max
   // slope) s: a step of gap / (descent + slope) cannot jump over the surface; never less than the
@@ -145,6 +156,20 @@ bool Seabed::march(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t0,
   return false;
 }
 
+bool Seabed::descendsSteeply(const Eigen::Vector3f& d) const {
+  // descent = -d_z / |d_xy| > max slope, decided on squares (no square root, no division) unless the two
+  // are within 1e-4 of each other, where the rounding of the exact form could tip the comparison: then
+  // that form, as the march computes it. The same decision, bit for bit.
+  const float h2 = d.x() * d.x() + d.y() * d.y(), down = -d.z();
+  if (!(down > 0.0f)) return false;
+  const float lhs = down * down, rhs = max_slope_ * max_slope_ * h2;
+  if (lhs > rhs * 1.0001f) return true;
+  if (lhs < rhs * 0.9999f) return false;
+  const float horizontal = std::sqrt(h2);
+  const float inv_horizontal = horizontal > 1e-6f ? 1.0f / horizontal : INFINITY;
+  return down * inv_horizontal > max_slope_;
+}
+
 bool Seabed::refine(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float lo, float hi, float start, float* t,
                     Eigen::Vector3f* n) const {
   // Newton on f(t) = ray z - h with the exact slope of the bilinear relief, kept inside the bracket
@@ -152,8 +177,6 @@ bool Seabed::refine(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float lo
   // Newton step shorter than 0.5 mm along the ray (its residual is second order: micrometres).
   // The normal comes from the slope of the last evaluation (within 0.5 mm of the hit: same patch,
   // or a slope change of a few thousandths across a cell edge).
-  // |step| < 0.5 mm / |d|, squared: no square root or division on the per-pixel path.
-  const float step_tolerance2 = 2.5e-7f / d.squaredNorm();
   float tm = start;
   float hx = 0.0f, hy = 0.0f;
   for (int k = 0; k < kRefineIterations; ++k) {
@@ -161,6 +184,9 @@ bool Seabed::refine(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float lo
     sampleHeightAndSlope(o.x() + tm * d.x(), o.y() + tm * d.y(), &h, &hx, &hy);
     const float f = o.z() + tm * d.z() - h;
     if (std::abs(f) < 2e-4f) break;
+    // |step| < 0.5 mm / |d|, squared: no square root; the division only once the first sample missed
+    // (most pixels stop above, from a neighbour's hit).
+    const float step_tolerance2 = 2.5e-7f / d.squaredNorm();
     (f > 0.0f ? lo : hi) = tm;
     const float slope = d.z() - hx * d.x() - hy * d.y();
     const float next = slope < 0.0f ? tm - f / slope : 0.5f * (lo + hi);

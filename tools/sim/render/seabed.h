@@ -45,6 +45,9 @@ class Seabed {
  private:
   bool march(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t0, float t1, float hint_t, float* t,
              Eigen::Vector3f* n) const;
+  static bool insideSquare(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t);
+  static void clipToSquare(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float* s0, float* s1);
+  bool descendsSteeply(const Eigen::Vector3f& d) const;  // faster than the steepest relief slope
   bool refine(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float lo, float hi, float start, float* t,
               Eigen::Vector3f* n) const;
   static Eigen::Vector3f normalOfSlope(float hx, float hy) {
