@@ -12,6 +12,7 @@
 #include "board/replay/bench_replay.h"
 #include "board/replay/realtime_replay.h"
 #include "board/service/run_command.h"
+#include "drivers/realtime/heap_policy.h"
 #include "vision/iqa/mdm.h"
 
 namespace {
@@ -68,6 +69,7 @@ int runConfig(const std::string& board, bool list) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  deepnav::fixHeapPolicy();  // before any buffer: image-sized blocks mapped, never fragmenting the heap
   CLI::App app{"deepnav: navigation firmware of a deep-sea work-class ROV"};
   app.require_subcommand(1);
 

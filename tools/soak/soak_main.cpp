@@ -5,9 +5,11 @@
 
 #include <CLI/CLI.hpp>
 
+#include "drivers/realtime/heap_policy.h"
 #include "tools/soak/soak_run.h"
 
 int main(int argc, char** argv) {
+  deepnav::fixHeapPolicy();  // the vehicle binary's heap policy (board/main.cpp), so the soak measures it
   deepnav::soak::SoakOptions o;
   std::string json_path;
   CLI::App app{"deepnav-soak: dives back to back through the threaded runtime; resident memory and loop statistics"};
