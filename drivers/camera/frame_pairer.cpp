@@ -10,27 +10,11 @@ void FramePairer::removeAt(int side, int index) {
 }
 
 void FramePairer::dropOlderThan(int side, TimeUs t_us, Result* r) {
-  auto& p = pending_[static_cast<std::size_t>(side)];
-  for (int i = 0; i < count_[static_cast<std::size_t>(side)];) {
-    if (p[static_cast<std::size_t>(i)].t_us < t_us) {
-      r->dropped[static_cast<std::size_t>(r->dropped_count++)] = p[static_cast<std::size_t>(i)];
-      removeAt(side, i);
-    } else {
-      ++i;
-    }
-  }
+  dropIf(side, r, [t_us](const Frame& f) { return f.t_us < t_us; });
 }
 
 void FramePairer::dropTicksBelow(int side, std::int64_t tick, Result* r) {
-  auto& p = pending_[static_cast<std::size_t>(side)];
-  for (int i = 0; i < count_[static_cast<std::size_t>(side)];) {
-    if (p[static_cast<std::size_t>(i)].tick < tick) {
-      r->dropped[static_cast<std::size_t>(r->dropped_count++)] = p[static_cast<std::size_t>(i)];
-      removeAt(side, i);
-    } else {
-      ++i;
-    }
-  }
+  dropIf(side, r, [tick](const Frame& f) { return f.tick < tick; });
 }
 
 // Pairing by trigger tick: only the other side's frame of the same tick is a partner, and only within

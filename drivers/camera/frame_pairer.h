@@ -50,6 +50,19 @@ class FramePairer {
   void removeAt(int side, int index);
   void dropOlderThan(int side, TimeUs t_us, Result* r);
   void dropTicksBelow(int side, std::int64_t tick, Result* r);
+  // Moves every waiting frame of one side that `drop` selects into r->dropped, keeping the others' order.
+  template <typename Pred>
+  void dropIf(int side, Result* r, Pred drop) {
+    auto& p = pending_[static_cast<std::size_t>(side)];
+    for (int i = 0; i < count_[static_cast<std::size_t>(side)];) {
+      if (drop(p[static_cast<std::size_t>(i)])) {
+        r->dropped[static_cast<std::size_t>(r->dropped_count++)] = p[static_cast<std::size_t>(i)];
+        removeAt(side, i);
+      } else {
+        ++i;
+      }
+    }
+  }
   Result offerTicked(int side, const Frame& self);
 
   TimeUs tolerance_us_;
