@@ -221,6 +221,14 @@ struct PairCheck {
       in.pool.release(slot);
     }
   }
+  // Drains every 5 ms for duration_us, as a consumer polling the frame ring would.
+  void drainFor(Inputs& in, const FakePairFills& fills, TimeUs duration_us) {
+    const TimeUs end = monotonicUs() + duration_us;
+    while (monotonicUs() < end) {
+      drain(in, fills);
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+  }
 };
 
 TEST_F(AravisStereoTest, SynchronisedPairsArriveWithinToleranceWithTheCamerasPixels) {
@@ -235,11 +243,7 @@ TEST_F(AravisStereoTest, SynchronisedPairsArriveWithinToleranceWithTheCamerasPix
 
   // WHEN the driver runs for 1.5 s at 20 Hz
   PairCheck check;
-  const TimeUs end = monotonicUs() + 1'500'000;
-  while (monotonicUs() < end) {
-    check.drain(in, fakes.fills());
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
+  check.drainFor(in, fakes.fills(), 1'500'000);
   camera.stop();
   check.drain(in, fakes.fills());
   const CameraStatus s = camera.status();
@@ -295,11 +299,7 @@ TEST_F(AravisStereoTest, UnderCpuLoadPairsAreNeverMixedAndLateFramesAreCountedNo
   {
     CpuHog hog(4);
     // WHEN the driver runs for 2 s under that load
-    const TimeUs end = monotonicUs() + 2'000'000;
-    while (monotonicUs() < end) {
-      check.drain(in, fakes.fills());
-      std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    }
+    check.drainFor(in, fakes.fills(), 2'000'000);
   }
   camera.stop();
   check.drain(in, fakes.fills());

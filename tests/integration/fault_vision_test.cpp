@@ -79,6 +79,30 @@ void cameraFaults(const FaultRun& base) {
               garbage, static_cast<int>(kMissingTo_s - kMissingFrom_s), after_vo, before, during);
 }
 
+// Replays with k-sigma outliers of one kind on every second result in [t_start_s, t_end_s] and checks what
+// must hold: none accepted from 10 sigma (at most one in ten at 5), every output finite, the estimate within
+// 5 cm of the clean run. Returns the run and its largest deviation for the printed figure.
+FaultRun outlierRun(const std::string& recording, const FaultRun& ref, InjectedFault kind, const char* name,
+                    double t_start_s, double t_end_s, double k, testing::Deviation* d) {
+  InjectedFaultSpec spec;
+  spec.kind = kind;
+  spec.t_start_s = t_start_s;
+  spec.t_end_s = t_end_s;
+  spec.every_n = 2;
+  spec.magnitude_sigma = k;
+  FaultRun run = replayWithFaults(recording, name, spec);
+  EXPECT_GT(run.tap->counters().injected, 10u);
+  if (k >= 10.0) {
+    EXPECT_EQ(run.tap->counters().accepted_injected, 0u);
+  } else {
+    EXPECT_LE(run.tap->counters().accepted_injected, run.tap->counters().injected / 10);
+  }
+  EXPECT_EQ(nonFiniteTicks(run), 0);
+  *d = maxDeviation(run, ref);
+  EXPECT_LT(d->position_m, 0.05);
+  return run;
+}
+
 TEST(FaultVision, CameraFaultsAndFaultyVisionResults) {
   // GIVEN a rendered dive through both stages with 1 s of noise frames and 2 s without frames
   FaultRun base = replayWithFaults(dive(), "base", {}, kQuickStages);
@@ -101,23 +125,9 @@ TEST(FaultVision, CameraFaultsAndFaultyVisionResults) {
   // WHEN VO results carry 5-50 sigma outliers on every component (one result in two)
   for (double k : {5.0, 10.0, 20.0, 50.0}) {
     SCOPED_TRACE(testing::strf("vo outlier %.0f", k));
-    InjectedFaultSpec spec;
-    spec.kind = InjectedFault::kVoOutlier;
-    spec.t_start_s = s2;
-    spec.t_end_s = end;
-    spec.every_n = 2;
-    spec.magnitude_sigma = k;
-    const FaultRun run = replayWithFaults(recording, "vo_outlier", spec);
     // THEN none is accepted (5 sigma: almost none) and the estimate barely moves
-    EXPECT_GT(run.tap->counters().injected, 10u);
-    if (k >= 10.0) {
-      EXPECT_EQ(run.tap->counters().accepted_injected, 0u);
-    } else {
-      EXPECT_LE(run.tap->counters().accepted_injected, run.tap->counters().injected / 10);
-    }
-    EXPECT_EQ(nonFiniteTicks(run), 0);
-    const testing::Deviation d = maxDeviation(run, ref);
-    EXPECT_LT(d.position_m, 0.05);
+    testing::Deviation d;
+    const FaultRun run = outlierRun(recording, ref, InjectedFault::kVoOutlier, "vo_outlier", s2, end, k, &d);
     std::printf("[fault] vo outlier %2.0f sigma: %u outliers, false accepts %u, max deviation %.4f m %.3f deg\n", k,
                 run.tap->counters().injected, run.tap->counters().accepted_injected, d.position_m,
                 d.angle_rad * 180.0 / M_PI);
@@ -126,22 +136,8 @@ TEST(FaultVision, CameraFaultsAndFaultyVisionResults) {
   // WHEN marker poses carry 5-50 sigma outliers (each marker moved k position sigmas on every axis)
   for (double k : {5.0, 10.0, 20.0, 50.0}) {
     SCOPED_TRACE(testing::strf("marker outlier %.0f", k));
-    InjectedFaultSpec spec;
-    spec.kind = InjectedFault::kMarkerOutlier;
-    spec.t_start_s = panel;
-    spec.t_end_s = end;
-    spec.every_n = 2;
-    spec.magnitude_sigma = k;
-    const FaultRun run = replayWithFaults(recording, "marker_outlier", spec);
-    EXPECT_GT(run.tap->counters().injected, 10u);
-    if (k >= 10.0) {
-      EXPECT_EQ(run.tap->counters().accepted_injected, 0u);
-    } else {
-      EXPECT_LE(run.tap->counters().accepted_injected, run.tap->counters().injected / 10);
-    }
-    EXPECT_EQ(nonFiniteTicks(run), 0);
-    const testing::Deviation d = maxDeviation(run, ref);
-    EXPECT_LT(d.position_m, 0.05);
+    testing::Deviation d;
+    const FaultRun run = outlierRun(recording, ref, InjectedFault::kMarkerOutlier, "marker_outlier", panel, end, k, &d);
     std::printf("[fault] marker outlier %2.0f sigma: %u images with outliers, false accepts %u, max deviation %.4f m "
                 "%.3f deg\n",
                 k, run.tap->counters().injected, run.tap->counters().accepted_injected, d.position_m,
