@@ -31,6 +31,21 @@ pid_t startRealtimeReplay(const std::string& dive, const std::string& out) {
   return pid;
 }
 
+// Waits until the recording being written holds at least `solutions` navigation solutions in complete chunks
+// (it is opened as a cut-off file, as after a crash), so the kill lands with seconds of run on disk however
+// slowly the process started (an instrumented build takes several seconds to its first tick). False after
+// timeout_s.
+bool waitForSolutionsOnDisk(const std::string& path, std::uint64_t solutions, double timeout_s) {
+  const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+  while (std::chrono::steady_clock::now() < end) {
+    RecordingReader reader;
+    std::string error;
+    if (reader.open(path, &error) && reader.count(Topic::kNavSolution) >= solutions) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(250));
+  }
+  return false;
+}
+
 TEST(CrashSafety, KillDuringRecordingLeavesAReadableRecording) {
   // GIVEN the vehicle runtime recording a 10 s dive in real time
   const std::string dive = testing::makeTestDive("crash_dive", 10.0);
@@ -38,9 +53,11 @@ TEST(CrashSafety, KillDuringRecordingLeavesAReadableRecording) {
   std::filesystem::remove_all(out);
   const pid_t pid = startRealtimeReplay(dive, out);
   ASSERT_GT(pid, 0);
-  // WHEN it is killed with SIGKILL 4 s in
-  std::this_thread::sleep_for(std::chrono::milliseconds(4000));
+  // WHEN it is killed with SIGKILL once 3 s of 100 Hz solutions are on disk, mid-way through the next chunk
+  const bool on_disk = waitForSolutionsOnDisk(out + "/live.mcap", 300, 120.0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
   ASSERT_EQ(kill(pid, SIGKILL), 0);
+  EXPECT_TRUE(on_disk) << "fewer than 300 solutions on disk after 120 s";
   int status = 0;
   waitpid(pid, &status, 0);
   ASSERT_TRUE(WIFSIGNALED(status));
