@@ -8,6 +8,6 @@ cmake --build build -j"$(nproc)"
 ctest --test-dir build --output-on-failure -j"$(nproc)" --timeout 600
 # Sanitizer stage (issue 9, tools/sanitize/README.md): the whole suite under ASan+UBSan, the threaded
 # runtime under TSan; any finding fails. Opt-in (DEEPNAV_SANITIZERS=1): the ASan+UBSan suite alone took
-# 43 min on this 2-core machine (dive tests 5-12x slower), beyond the CI budget beside the Release stage,
+# 43 min on this 2-core machine (dive tests 4-12x slower), beyond the CI budget beside the Release stage,
 # and the TSan stage still reports races inside uninstrumented libraries (OpenCV's TBB pool, GLib).
 if [[ "${DEEPNAV_SANITIZERS:-0}" != 0 ]]; then tools/sanitize/run.sh; fi
