@@ -1,10 +1,13 @@
 #pragma once
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 
 #include <Eigen/Core>
 
-#if defined(__SSE__)
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#elif defined(__SSE__)
 #include <xmmintrin.h>
 #elif defined(__aarch64__)
 #include <arm_neon.h>
@@ -29,6 +32,25 @@ inline Float4 loadFloat4(const float* p) {
   Float4 v;
   std::memcpy(&v, p, sizeof(v));
   return v;
+}
+
+// Two adjacent 4-byte words (four 8-bit values each, e.g. B, G, R, 0) to two Float4s, exactly: one 8-byte
+// load and integer unpacks (a scalar int-to-float conversion per byte would stall on its register).
+inline void texelPairFloat4(const std::uint32_t* words, Float4* first, Float4* second) {
+#if defined(__SSE2__)
+  const __m128i zero = _mm_setzero_si128();
+  const __m128i u16 = _mm_unpacklo_epi8(_mm_loadl_epi64(reinterpret_cast<const __m128i*>(words)), zero);
+  *first = reinterpret_cast<Float4>(_mm_cvtepi32_ps(_mm_unpacklo_epi16(u16, zero)));
+  *second = reinterpret_cast<Float4>(_mm_cvtepi32_ps(_mm_unpackhi_epi16(u16, zero)));
+#elif defined(__aarch64__)
+  const uint16x8_t u16 = vmovl_u8(vld1_u8(reinterpret_cast<const std::uint8_t*>(words)));
+  *first = reinterpret_cast<Float4>(vcvtq_f32_u32(vmovl_u16(vget_low_u16(u16))));
+  *second = reinterpret_cast<Float4>(vcvtq_f32_u32(vmovl_u16(vget_high_u16(u16))));
+#else
+  const auto* b = reinterpret_cast<const std::uint8_t*>(words);
+  *first = Float4{static_cast<float>(b[0]), static_cast<float>(b[1]), static_cast<float>(b[2]), static_cast<float>(b[3])};
+  *second = Float4{static_cast<float>(b[4]), static_cast<float>(b[5]), static_cast<float>(b[6]), static_cast<float>(b[7])};
+#endif
 }
 
 // Correctly rounded square root per lane (as std::sqrt), in one instruction where there is one.

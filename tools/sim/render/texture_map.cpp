@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include <opencv2/imgproc.hpp>
 
@@ -31,9 +32,26 @@ void TextureMap::buildMips() {
     scale_.push_back(static_cast<float>(next.cols) / static_cast<float>(levels_[0].cols));
     levels_.push_back(next);
   }
+  texels_.clear();
   view_.clear();
-  for (std::size_t k = 0; k < levels_.size(); ++k)
-    view_.push_back({levels_[k].ptr<std::uint8_t>(), levels_[k].step[0], levels_[k].cols, levels_[k].rows, scale_[k]});
+  for (const cv::Mat& level : levels_) packLevel(level);
+}
+
+void TextureMap::packLevel(const cv::Mat& bgr) {
+  const int cols = bgr.cols, rows = bgr.rows, stride = cols + 2;
+  const std::size_t offset = texels_.size();
+  view_.push_back({static_cast<std::ptrdiff_t>(offset), stride, cols, rows, scale_[view_.size()]});
+  texels_.resize(offset + static_cast<std::size_t>(stride) * (rows + 2));
+  // The texel a border position repeats: the opposite edge when wrapping, the edge itself when clamping.
+  const auto source = [&](int i, int n) { return i < 0 ? (wrap_ ? n - 1 : 0) : i >= n ? (wrap_ ? 0 : n - 1) : i; };
+  for (int y = -1; y <= rows; ++y) {
+    const cv::Vec3b* row = bgr.ptr<cv::Vec3b>(source(y, rows));
+    for (int x = -1; x <= cols; ++x) {
+      const cv::Vec3b& t = row[source(x, cols)];
+      const std::uint8_t bytes[4] = {t[0], t[1], t[2], 0};
+      std::memcpy(&texels_[offset + static_cast<std::size_t>(y + 1) * stride + (x + 1)], bytes, sizeof(bytes));
+    }
+  }
 }
 
 }  // namespace deepnav::sim

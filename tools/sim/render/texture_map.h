@@ -44,23 +44,22 @@ class TextureMap {
 
  private:
 
-  struct Level {  // raw view of one level for the sampler
-    const std::uint8_t* data;
-    std::size_t step;
+  // One level for the sampler: texels as 4 bytes (B, G, R, 0) in a grid with a one-texel border, so that
+  // texel (x, y), x in [-1, cols], y in [-1, rows], is at texels_[offset + (y + 1) stride + x + 1]. The border repeats
+  // the opposite edge (wrap) or the edge itself (clamp): the bilinear pair (x0, x0 + 1) is then always two
+  // adjacent words (one 8-byte load per row) once x0 is wrapped into [0, cols) or clamped into [-1, cols).
+  struct Level {
+    std::ptrdiff_t offset, stride;
     int cols, rows;
     float scale;
   };
+  void packLevel(const cv::Mat& bgr);  // appends one level to texels_ and view_
   std::vector<cv::Mat> levels_;
+  std::vector<std::uint32_t> texels_;  // all levels, as Level describes (offsets, not pointers: copyable)
   std::vector<Level> view_;
   std::vector<float> scale_;  // level-L texels per level-0 texel (both axes; sizes halve exactly or clamp)
   bool wrap_ = false;
 };
-
-inline constexpr std::array<float, 256> kByteToFloat = [] {
-  std::array<float, 256> table{};
-  for (int i = 0; i < 256; ++i) table[i] = static_cast<float>(i);
-  return table;
-}();
 
 inline Eigen::Vector4f TextureMap::sampleLevel(int level, float u, float v) const {
   const Level& L = view_[level];
@@ -70,25 +69,23 @@ inline Eigen::Vector4f TextureMap::sampleLevel(int level, float u, float v) cons
   x0 -= x < static_cast<float>(x0);
   y0 -= y < static_cast<float>(y0);
   const float ax = x - static_cast<float>(x0), ay = y - static_cast<float>(y0);
-  int x1 = x0 + 1, y1 = y0 + 1;
+  // Wrapped into [0, cols) or clamped into [-1, cols): with the border, (x0, x0 + 1) and (y0, y0 + 1)
+  // address the same texels as wrapping or clamping each of the four separately.
   if (wrap_) {
-    x0 &= L.cols - 1, x1 &= L.cols - 1, y0 &= L.rows - 1, y1 &= L.rows - 1;
+    x0 &= L.cols - 1, y0 &= L.rows - 1;
   } else {
-    x0 = std::clamp(x0, 0, L.cols - 1), x1 = std::clamp(x1, 0, L.cols - 1);
-    y0 = std::clamp(y0, 0, L.rows - 1), y1 = std::clamp(y1, 0, L.rows - 1);
+    x0 = std::clamp(x0, -1, L.cols - 1), y0 = std::clamp(y0, -1, L.rows - 1);
   }
-  const std::uint8_t* r0 = L.data + static_cast<std::ptrdiff_t>(y0) * L.step;
-  const std::uint8_t* r1 = L.data + static_cast<std::ptrdiff_t>(y1) * L.step;
+  const std::uint32_t* r0 = texels_.data() + L.offset + (y0 + 1) * L.stride + (x0 + 1);
   const float w00 = (1.0f - ax) * (1.0f - ay), w10 = ax * (1.0f - ay);
   const float w01 = (1.0f - ax) * ay, w11 = ax * ay;
-  const std::uint8_t *a = r0 + 3 * x0, *b = r0 + 3 * x1, *c = r1 + 3 * x0, *d = r1 + 3 * x1;
+  // Four texels to four lanes each (lane 3 is 0), two per row in one load. The sum in the same order as
+  // per channel in scalars (bit-identical), on B, G, R at once.
+  Float4 t00, t10, t01, t11;
+  texelPairFloat4(r0, &t00, &t10);
+  texelPairFloat4(r0 + L.stride, &t01, &t11);
+  const Float4 bgr = w00 * t00 + w10 * t10 + w01 * t01 + w11 * t11;
   constexpr float k = 1.0f / 255.0f;
-  const float* f = kByteToFloat.data();  // float(byte) by a load: cvtsi2ss stalls on its register
-  // Built in a register: Eigen's constructor from four scalars went through the stack (4- and 8-byte
-  // stores read back by one 16-byte load, which cannot be store-forwarded: a stall per fetch).
-  const Float4 bgr = {w00 * f[a[0]] + w10 * f[b[0]] + w01 * f[c[0]] + w11 * f[d[0]],
-                      w00 * f[a[1]] + w10 * f[b[1]] + w01 * f[c[1]] + w11 * f[d[1]],
-                      w00 * f[a[2]] + w10 * f[b[2]] + w01 * f[c[2]] + w11 * f[d[2]], 0.0f};
   return toVector4f(bgr * k);
 }
 
