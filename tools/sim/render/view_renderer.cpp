@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tools/sim/render/float4.h"
+
 namespace deepnav::sim {
 
 namespace {
@@ -28,7 +30,8 @@ bool ViewRenderer::init(const CameraConfig& camera, int channels, const WaterOpt
   near_m_.assign(n, 0.0f);
   candidates_.reserve(n);
   // |(x_n, y_n, 1)| per pixel and its inverse: the ray's length per unit depth, for distances and vignetting.
-  pixel_rays_.resize(static_cast<std::size_t>(camera.width_px) * camera.height_px);
+  // Plus 3 entries: the shading reads rays 4 at a time, and the image's last packet may be partial.
+  pixel_rays_.assign(static_cast<std::size_t>(camera.width_px) * camera.height_px + 3, PixelRay{1.0f, 1.0f});
   for (int v = 0; v < camera.height_px; ++v) {
     const double yn = (v - camera.cy_px) / camera.fy_px;
     for (int u = 0; u < camera.width_px; ++u) {
@@ -112,88 +115,121 @@ void ViewRenderer::listCandidates(const Cone& cone) {
   }
 }
 
-void ViewRenderer::renderTile(int u0, int v0, int u1, int v1, const LampSet& lamps, float* radiance, float* depth_m) {
-  const auto& prims = scene_->primitives();
-  const int w = camera_.width_px, c = channels_;
-  const int count = static_cast<int>(candidates_.size());
-  SceneHit hit;
-  LocalHit local;
+void ViewRenderer::renderTile(int u0, int v0, int u1, int v1, const LampSet&, float*, float*) {
+  RowHits row;
   for (int v = v0; v < v1; ++v) {
-    float seabed_hint_t = 0.0f;  // the previous pixel's seabed hit: Newton's first guess for this one
-    for (int u = u0; u < u1; ++u) {
-      const PixelRay& ray = pixel_rays_[static_cast<std::size_t>(v) * w + u];
-      const float inv_len = ray.inv_length;
-      const Eigen::Vector3f d = pixelRay(u, v);
-      float t_best = kMaxRange_m * inv_len;
-      hit.primitive = -2;
-      const float uf = static_cast<float>(u), vf = static_cast<float>(v);
-      for (int k = 0; k < count; ++k) {
-        const Candidate& c = candidates_[k];
-        if (c.near_m * inv_len >= t_best) break;
-        const Eigen::Vector3f d_local = c.base + uf * c.du + vf * c.dv;
-        if (intersectPrimitive(origin_local_[c.primitive], d_local, prims[c.primitive], kTMin, t_best, &local)) {
-          t_best = local.t;
-          hit.primitive = c.primitive;
-          hit.local = local;
-        }
-      }
-      // The seabed lies below its max height: a ray still above it at t_best cannot meet it before.
-      float t_seabed = 0.0f;
-      if (origin_.z() + t_best * d.z() <= seabed_top_m_ &&
-          scene_->seabed().intersect(origin_, d, kTMin, t_best, &t_seabed, &hit.local.n, seabed_hint_t)) {
-        t_best = t_seabed;
-        hit.primitive = Scene::kSeabed;
-      }
-      seabed_hint_t = hit.primitive == Scene::kSeabed ? t_best : 0.0f;
-      const std::size_t pixel = static_cast<std::size_t>(v) * w + u;
-      Eigen::Vector4f L = backscatter_;
-      if (hit.primitive != -2) {
-        hit.t = t_best;
-        L = shade(hit, d, ray, lamps);
-        depth_m[pixel] = t_best;
-      } else {
-        depth_m[pixel] = 0.0f;
-      }
-      const float cos2 = inv_len * inv_len;
-      L *= cos2 * cos2;  // cos^4 of the angle off the optical axis
-      float* out = radiance + pixel * c;
-      if (c == 3) {
-        out[0] = L[0], out[1] = L[1], out[2] = L[2];
-      } else {
-        out[0] = 0.114f * L[0] + 0.587f * L[1] + 0.299f * L[2];
-      }
-    }
+    intersectRow(v, u0, u1, &row);
+    for (int i = 0; i < u1 - u0; i += 4) shadePacket(v, u0 + i, std::min(4, u1 - u0 - i), &row.hit[i], &row.d[i]);
   }
 }
 
-Eigen::Vector4f ViewRenderer::shade(const SceneHit& hit, const Eigen::Vector3f& d, const PixelRay& ray,
-                                    const LampSet& lamps) const {
-  const float distance = hit.t * ray.length;
-  const Eigen::Vector3f p = origin_ + hit.t * d;
-  const Eigen::Vector3f n = scene_->normalAt(hit);
+void ViewRenderer::intersectRow(int v, int u0, int u1, RowHits* row) const {
+  const auto& prims = scene_->primitives();
+  const int w = camera_.width_px;
+  const int count = static_cast<int>(candidates_.size());
+  LocalHit local;
+  float seabed_hint_t = 0.0f;  // the previous pixel's seabed hit: Newton's first guess for this one
+  for (int u = u0; u < u1; ++u) {
+    SceneHit& hit = row->hit[u - u0];
+    const Eigen::Vector3f d = pixelRay(u, v);
+    row->d[u - u0] = d;
+    const float inv_len = pixel_rays_[static_cast<std::size_t>(v) * w + u].inv_length;
+    float t_best = kMaxRange_m * inv_len;
+    hit.primitive = -2;
+    const float uf = static_cast<float>(u), vf = static_cast<float>(v);
+    for (int k = 0; k < count; ++k) {
+      const Candidate& c = candidates_[k];
+      if (c.near_m * inv_len >= t_best) break;
+      const Eigen::Vector3f d_local = c.base + uf * c.du + vf * c.dv;
+      if (intersectPrimitive(origin_local_[c.primitive], d_local, prims[c.primitive], kTMin, t_best, &local)) {
+        t_best = local.t;
+        hit.primitive = c.primitive;
+        hit.local = local;
+      }
+    }
+    // The seabed lies below its max height: a ray still above it at t_best cannot meet it before.
+    float t_seabed = 0.0f;
+    if (origin_.z() + t_best * d.z() <= seabed_top_m_ &&
+        scene_->seabed().intersect(origin_, d, kTMin, t_best, &t_seabed, &hit.local.n, seabed_hint_t)) {
+      t_best = t_seabed;
+      hit.primitive = Scene::kSeabed;
+    }
+    seabed_hint_t = hit.primitive == Scene::kSeabed ? t_best : 0.0f;
+    hit.t = hit.primitive != -2 ? t_best : 0.0f;
+    depth_m_[static_cast<std::size_t>(v) * w + u] = hit.t;
+  }
+  // Padding lanes of the last packet: no hit, a benign ray.
+  for (int i = u1 - u0; i < ((u1 - u0 + 3) & ~3); ++i) {
+    row->hit[i].primitive = -2;
+    row->hit[i].t = 0.0f;
+    row->d[i] = row->d[0];
+  }
+}
+
+namespace {
+Float4 absFloat4(Float4 x) { return reinterpret_cast<Float4>(reinterpret_cast<Int4>(x) & 0x7FFFFFFF); }
+// Lane-wise a . b, summed as Eigen's dot() and squaredNorm() sum three terms: x + (y + z).
+Float4 dot3(Float4 ax, Float4 ay, Float4 az, Float4 bx, Float4 by, Float4 bz) { return ax * bx + (ay * by + az * bz); }
+}  // namespace
+
+void ViewRenderer::shadePacket(int v, int u, int count, const SceneHit* hit, const Eigen::Vector3f* d) const {
+  // pixel_rays_ is padded by 3 entries: the last packet of the image reads within it.
+  const PixelRay* ray = &pixel_rays_[static_cast<std::size_t>(v) * camera_.width_px + u];
+  // Lanes built from registers (a 16-byte load of 4-byte stores would stall on store forwarding).
+  const Float4 t{hit[0].t, hit[1].t, hit[2].t, hit[3].t};
+  const Float4 length{ray[0].length, ray[1].length, ray[2].length, ray[3].length};
+  const Float4 inv_length{ray[0].inv_length, ray[1].inv_length, ray[2].inv_length, ray[3].inv_length};
+  const Float4 dx{d[0].x(), d[1].x(), d[2].x(), d[3].x()}, dy{d[0].y(), d[1].y(), d[2].y(), d[3].y()},
+      dz{d[0].z(), d[1].z(), d[2].z(), d[3].z()};
+  Eigen::Vector3f n[4];
+  for (int i = 0; i < 4; ++i) n[i] = hit[i].primitive != -2 ? scene_->normalAt(hit[i]) : Eigen::Vector3f::UnitZ();
+  const Float4 nx{n[0].x(), n[1].x(), n[2].x(), n[3].x()}, ny{n[0].y(), n[1].y(), n[2].y(), n[3].y()},
+      nz{n[0].z(), n[1].z(), n[2].z(), n[3].z()};
+  const Float4 distance = t * length;
+  const Float4 px = origin_.x() + t * dx, py = origin_.y() + t * dy, pz = origin_.z() + t * dz;
   // A pixel's footprint at the hit, widened for oblique views: fronto / sqrt(cos), the geometric mean
   // of its two axes (texture level choice only, so the square root is left to the comparison).
-  const float fronto_m = hit.t * inv_fx_;
-  const float cos_view = std::max(std::abs(n.dot(d)) * ray.inv_length, 0.1f);
-  const Eigen::Vector4f albedo = scene_->albedoAt(hit, origin_, d, fronto_m * fronto_m / cos_view);
+  const Float4 fronto_m = t * inv_fx_;
+  const Float4 cos_raw = absFloat4(dot3(nx, ny, nz, dx, dy, dz)) * inv_length;
+  const Float4 cos_view = cos_raw < 0.1f ? Float4{} + 0.1f : cos_raw;
+  const Float4 footprint2 = fronto_m * fronto_m / cos_view;
   // I cos(theta_s) cos(phi) / d_l^2 per lamp, with both cosines = dot / d_l; one division for both
   // lamps (1 / (q0 q1) times the other's q).
-  float n_l[2], axis_l[2], dl2[2];
+  Float4 n_l[2], axis_l[2], dl2[2];
+  const Eigen::Vector3f& a = lamps_.axis_in_panel;
   for (int k = 0; k < 2; ++k) {
-    const Eigen::Vector3f l = lamps.p_lamp_in_panel_m[k] - p;
-    n_l[k] = n.dot(l), axis_l[k] = -lamps.axis_in_panel.dot(l), dl2[k] = l.squaredNorm();
+    const Eigen::Vector3f& lamp = lamps_.p_lamp_in_panel_m[k];
+    const Float4 lx = lamp.x() - px, ly = lamp.y() - py, lz = lamp.z() - pz;
+    n_l[k] = dot3(nx, ny, nz, lx, ly, lz);
+    axis_l[k] = -dot3(Float4{} + a.x(), Float4{} + a.y(), Float4{} + a.z(), lx, ly, lz);
+    dl2[k] = dot3(lx, ly, lz, lx, ly, lz);
   }
-  const float q0 = dl2[0] * dl2[0], q1 = dl2[1] * dl2[1];
-  const float inv_q01 = 1.0f / (q0 * q1);
-  const float inv_q[2] = {q1 * inv_q01, q0 * inv_q01};
-  Eigen::Vector4f E = Eigen::Vector4f::Zero();
-  for (int k = 0; k < 2; ++k) {
-    if (n_l[k] <= 0.0f || axis_l[k] <= 0.0f) continue;
-    const float irradiance = optics_.lamp_intensity * n_l[k] * axis_l[k] * inv_q[k];
-    E += irradiance * water_.transmittance(std::sqrt(dl2[k]) + distance);
+  const Float4 q0 = dl2[0] * dl2[0], q1 = dl2[1] * dl2[1];
+  const Float4 inv_q01 = 1.0f / (q0 * q1);
+  const Float4 irradiance[2] = {optics_.lamp_intensity * n_l[0] * axis_l[0] * (q1 * inv_q01),
+                                optics_.lamp_intensity * n_l[1] * axis_l[1] * (q0 * inv_q01)};
+  const Float4 lamp_path[2] = {sqrt4(dl2[0]) + distance, sqrt4(dl2[1]) + distance};
+  float* out = radiance_ + (static_cast<std::size_t>(v) * camera_.width_px + u) * channels_;
+  for (int i = 0; i < count; ++i, out += channels_) {
+    Eigen::Vector4f L = backscatter_;
+    if (hit[i].primitive != -2) {
+      Eigen::Vector4f E = Eigen::Vector4f::Zero();
+      for (int k = 0; k < 2; ++k) {
+        if (n_l[k][i] <= 0.0f || axis_l[k][i] <= 0.0f) continue;
+        E += irradiance[k][i] * water_.transmittance(lamp_path[k][i]);
+      }
+      const Eigen::Vector4f veil = Eigen::Vector4f::Ones() - water_.transmittance(distance[i]);
+      const Eigen::Vector4f albedo = scene_->albedoAt(hit[i], origin_, d[i], footprint2[i]);
+      L = albedo.cwiseProduct(E) + backscatter_.cwiseProduct(veil);
+    }
+    const float cos2 = inv_length[i] * inv_length[i];
+    L *= cos2 * cos2;  // cos^4 of the angle off the optical axis
+    if (channels_ == 3) {
+      out[0] = L[0], out[1] = L[1], out[2] = L[2];
+    } else {
+      out[0] = 0.114f * L[0] + 0.587f * L[1] + 0.299f * L[2];
+    }
   }
-  const Eigen::Vector4f veil = Eigen::Vector4f::Ones() - water_.transmittance(distance);
-  return albedo.cwiseProduct(E) + backscatter_.cwiseProduct(veil);
 }
 
 }  // namespace deepnav::sim

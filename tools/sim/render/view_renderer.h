@@ -73,9 +73,19 @@ class ViewRenderer {
     float inv_length;
     float length;
   };
-  // Radiance B, G, R in lanes 0-2 (4-float vectors: one SSE operation for the three channels).
-  Eigen::Vector4f shade(const SceneHit& hit, const Eigen::Vector3f& d, const PixelRay& ray,
-                        const LampSet& lamps) const;
+  // The intersection pass of one row of a tile (pixels u0 + i, i < u1 - u0) fills these, the shading pass
+  // reads them; padded to a multiple of 4 with no-hit entries for the packets.
+  struct RowHits {
+    std::array<SceneHit, kTile> hit;
+    std::array<Eigen::Vector3f, kTile> d;
+  };
+  void intersectRow(int v, int u0, int u1, RowHits* row) const;
+  // Radiance of pixels (u + i, v), i < 4, into radiance_: the shading equation (class comment) with the
+  // pixels in the lanes of 4-float vectors for the geometry (hit point, normal, lamp vectors, the two
+  // divisions and the lamp distances' square roots) and per pixel for the albedo and the water
+  // transmittance (B, G, R in the lanes of one vector there). Every lane makes the same operations in the
+  // same order as a scalar evaluation, so the result does not depend on the grouping.
+  void shadePacket(int v, int u, int count, const SceneHit* hit, const Eigen::Vector3f* d) const;
 
   CameraConfig camera_;
   float inv_fx_ = 1.0f;
