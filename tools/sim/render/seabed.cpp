@@ -68,6 +68,14 @@ Eigen::Vector3f Seabed::normalAt(float x_m, float y_m) const {
 
 bool Seabed::intersect(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t_min, float t_max, float* t,
                        Eigen::Vector3f* n, float hint_t) const {
+  Eigen::Vector2f slope;
+  if (!intersectSlope(o, d, t_min, t_max, t, &slope, hint_t)) return false;
+  if (n) *n = normalOfSlope(slope.x(), slope.y());
+  return true;
+}
+
+bool Seabed::intersectSlope(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t_min, float t_max, float* t,
+                            Eigen::Vector2f* slope, float hint_t) const {
   // Reciprocal once: divisions were most of the cost of a seabed pixel.
   const float inv_z = d.z() != 0.0f ? 1.0f / d.z() : INFINITY;
   // The part of the ray inside the slab [min, max height].
@@ -85,7 +93,7 @@ bool Seabed::intersect(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float
   const float t_plane = d.z() != 0.0f ? -o.z() * inv_z : INFINITY;
   const auto flat = [&]() {
     *t = t_plane;
-    if (n) *n = Eigen::Vector3f::UnitZ();
+    *slope = Eigen::Vector2f::Zero();
     return true;
   };
   if (!(s0 < s1)) {  // never over the relief
@@ -93,7 +101,7 @@ bool Seabed::intersect(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float
     return false;
   }
   if (t_plane > t0 && t_plane < s0) return flat();  // flat ground before the relief
-  if (march(o, d, s0, s1, hint_t, t, n)) return true;
+  if (march(o, d, s0, s1, hint_t, t, slope)) return true;
   if (t_plane > s1 && t_plane < t1) return flat();  // flat ground after it
   return false;
 }
@@ -119,10 +127,11 @@ void Seabed::clipToSquare(const Eigen::Vector3f& o, const Eigen::Vector3f& d, fl
 }
 
 bool Seabed::march(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t0, float t1, float hint_t, float* t,
-                   Eigen::Vector3f* n) const {
+                   Eigen::Vector2f* slope) const {
   const auto hitAt = [&](float t_hit) {
     *t = t_hit;
-    if (n) *n = normalAt(o.x() + t_hit * d.x(), o.y() + t_hit * d.y());
+    float h = 0.0f;
+    sampleHeightAndSlope(o.x() + t_hit * d.x(), o.y() + t_hit * d.y(), &h, &slope->x(), &slope->y());
     return true;
   };
   if (descendsSteeply(d)) {
@@ -134,7 +143,7 @@ bool Seabed::march(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t0,
     if (o.z() + t0 * d.z() < max_height_m_ && above(o, d, t0) <= 0.0f) return hitAt(t0);
     if (o.z() + t1 * d.z() > min_height_m_ && above(o, d, t1) > 0.0f) return false;
     const float start = hint_t > t0 && hint_t < t1 ? hint_t : std::clamp(-o.z() / d.z(), t0, t1);
-    return refine(o, d, t0, t1, start, t, n);
+    return refine(o, d, t0, t1, start, t, slope);
   }
   const float horizontal = std::sqrt(d.x() * d.x() + d.y() * d.y());
   const float inv_horizontal = horizontal > 1e-6f ? 1.0f / horizontal : INFINITY;
@@ -150,7 +159,7 @@ bool Seabed::march(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t0,
     const float step_m = std::max(std::max(kMarchStep_m, kFarStepFraction * ta * length), fa * inv_closing);
     const float tb = std::min(ta + step_m * inv_horizontal, t1);
     const float fb = above(o, d, tb);
-    if (fb <= 0.0f) return refine(o, d, ta, tb, (ta * fb - tb * fa) / (fb - fa), t, n);
+    if (fb <= 0.0f) return refine(o, d, ta, tb, (ta * fb - tb * fa) / (fb - fa), t, slope);
     ta = tb, fa = fb;
   }
   return false;
@@ -171,7 +180,7 @@ bool Seabed::descendsSteeply(const Eigen::Vector3f& d) const {
 }
 
 bool Seabed::refine(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float lo, float hi, float start, float* t,
-                    Eigen::Vector3f* n) const {
+                    Eigen::Vector2f* slope) const {
   // Newton on f(t) = ray z - h with the exact slope of the bilinear relief, kept inside the bracket
   // [lo, hi] (f(lo) > 0 >= f(hi)) by bisecting when a step leaves it; to 0.2 mm in height, or a last
   // Newton step shorter than 0.5 mm along the ray (its residual is second order: micrometres).
@@ -197,7 +206,7 @@ bool Seabed::refine(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float lo
     tm = next > lo && next < hi ? next : 0.5f * (lo + hi);
   }
   *t = tm;
-  if (n) *n = normalOfSlope(hx, hy);
+  *slope = Eigen::Vector2f(hx, hy);
   return true;
 }
 

@@ -31,6 +31,14 @@ class Seabed {
   // the bracket still decides).
   bool intersect(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t_min, float t_max, float* t,
                  Eigen::Vector3f* n = nullptr, float hint_t = 0.0f) const;
+  // The same, giving the relief's slope (dh/dx, dh/dy) at the hit instead of the normal: the renderer
+  // normalises (normalOfSlope) four pixels at a time.
+  bool intersectSlope(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t_min, float t_max, float* t,
+                      Eigen::Vector2f* slope, float hint_t) const;
+  // The unit normal (-hx, -hy, 1) / |(-hx, -hy, 1)| of a slope.
+  static Eigen::Vector3f normalOfSlope(float hx, float hy) {
+    return Eigen::Vector3f(-hx, -hy, 1.0f) * (1.0f / std::sqrt(1.0f + hx * hx + hy * hy));
+  }
 
   float heightAt(float x_m, float y_m) const;
   Eigen::Vector3f normalAt(float x_m, float y_m) const;
@@ -44,15 +52,12 @@ class Seabed {
 
  private:
   bool march(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t0, float t1, float hint_t, float* t,
-             Eigen::Vector3f* n) const;
+             Eigen::Vector2f* slope) const;
   static bool insideSquare(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t);
   static void clipToSquare(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float* s0, float* s1);
   bool descendsSteeply(const Eigen::Vector3f& d) const;  // faster than the steepest relief slope
   bool refine(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float lo, float hi, float start, float* t,
-              Eigen::Vector3f* n) const;
-  static Eigen::Vector3f normalOfSlope(float hx, float hy) {
-    return Eigen::Vector3f(-hx, -hy, 1.0f) * (1.0f / std::sqrt(1.0f + hx * hx + hy * hy));
-  }
+              Eigen::Vector2f* slope) const;
   float sampleHeight(float x_m, float y_m) const;
   // Height and its exact slope (of the bilinear patch) at (x, y).
   void sampleHeightAndSlope(float x_m, float y_m, float* h, float* hx, float* hy) const;

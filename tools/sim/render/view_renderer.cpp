@@ -119,7 +119,7 @@ void ViewRenderer::renderTile(int u0, int v0, int u1, int v1, const LampSet&, fl
   RowHits row;
   for (int v = v0; v < v1; ++v) {
     intersectRow(v, u0, u1, &row);
-    for (int i = 0; i < u1 - u0; i += 4) shadePacket(v, u0 + i, std::min(4, u1 - u0 - i), &row.hit[i], &row.d[i]);
+    for (int i = 0; i < u1 - u0; i += 4) shadePacket(v, u0 + i, std::min(4, u1 - u0 - i), &row.hit[i], &row.d[i], &row.slope[i]);
   }
 }
 
@@ -133,6 +133,7 @@ void ViewRenderer::intersectRow(int v, int u0, int u1, RowHits* row) const {
     SceneHit& hit = row->hit[u - u0];
     const Eigen::Vector3f d = pixelRay(u, v);
     row->d[u - u0] = d;
+    row->slope[u - u0] = Eigen::Vector2f::Zero();
     const float inv_len = pixel_rays_[static_cast<std::size_t>(v) * w + u].inv_length;
     float t_best = kMaxRange_m * inv_len;
     hit.primitive = -2;
@@ -150,7 +151,7 @@ void ViewRenderer::intersectRow(int v, int u0, int u1, RowHits* row) const {
     // The seabed lies below its max height: a ray still above it at t_best cannot meet it before.
     float t_seabed = 0.0f;
     if (origin_.z() + t_best * d.z() <= seabed_top_m_ &&
-        scene_->seabed().intersect(origin_, d, kTMin, t_best, &t_seabed, &hit.local.n, seabed_hint_t)) {
+        scene_->seabed().intersectSlope(origin_, d, kTMin, t_best, &t_seabed, &row->slope[u - u0], seabed_hint_t)) {
       t_best = t_seabed;
       hit.primitive = Scene::kSeabed;
     }
@@ -163,6 +164,7 @@ void ViewRenderer::intersectRow(int v, int u0, int u1, RowHits* row) const {
     row->hit[i].primitive = -2;
     row->hit[i].t = 0.0f;
     row->d[i] = row->d[0];
+    row->slope[i] = Eigen::Vector2f::Zero();
   }
 }
 
@@ -172,7 +174,8 @@ Float4 absFloat4(Float4 x) { return reinterpret_cast<Float4>(reinterpret_cast<In
 Float4 dot3(Float4 ax, Float4 ay, Float4 az, Float4 bx, Float4 by, Float4 bz) { return ax * bx + (ay * by + az * bz); }
 }  // namespace
 
-void ViewRenderer::shadePacket(int v, int u, int count, const SceneHit* hit, const Eigen::Vector3f* d) const {
+void ViewRenderer::shadePacket(int v, int u, int count, const SceneHit* hit, const Eigen::Vector3f* d,
+                               const Eigen::Vector2f* slope) const {
   // pixel_rays_ is padded by 3 entries: the last packet of the image reads within it.
   const PixelRay* ray = &pixel_rays_[static_cast<std::size_t>(v) * camera_.width_px + u];
   // Lanes built from registers (a 16-byte load of 4-byte stores would stall on store forwarding).
@@ -181,10 +184,17 @@ void ViewRenderer::shadePacket(int v, int u, int count, const SceneHit* hit, con
   const Float4 inv_length{ray[0].inv_length, ray[1].inv_length, ray[2].inv_length, ray[3].inv_length};
   const Float4 dx{d[0].x(), d[1].x(), d[2].x(), d[3].x()}, dy{d[0].y(), d[1].y(), d[2].y(), d[3].y()},
       dz{d[0].z(), d[1].z(), d[2].z(), d[3].z()};
+  // Normals: the seabed's from its slope (Seabed::normalOfSlope, lane-wise), the primitives' rotated.
   Eigen::Vector3f n[4];
-  for (int i = 0; i < 4; ++i) n[i] = hit[i].primitive != -2 ? scene_->normalAt(hit[i]) : Eigen::Vector3f::UnitZ();
-  const Float4 nx{n[0].x(), n[1].x(), n[2].x(), n[3].x()}, ny{n[0].y(), n[1].y(), n[2].y(), n[3].y()},
-      nz{n[0].z(), n[1].z(), n[2].z(), n[3].z()};
+  for (int i = 0; i < 4; ++i) n[i] = hit[i].primitive >= 0 ? scene_->normalAt(hit[i]) : Eigen::Vector3f::UnitZ();
+  const Int4 seabed{-(hit[0].primitive == Scene::kSeabed), -(hit[1].primitive == Scene::kSeabed),
+                    -(hit[2].primitive == Scene::kSeabed), -(hit[3].primitive == Scene::kSeabed)};
+  const Float4 hx{slope[0].x(), slope[1].x(), slope[2].x(), slope[3].x()};
+  const Float4 hy{slope[0].y(), slope[1].y(), slope[2].y(), slope[3].y()};
+  const Float4 inv_norm = 1.0f / sqrt4(1.0f + hx * hx + hy * hy);
+  const Float4 nx = seabed ? -hx * inv_norm : Float4{n[0].x(), n[1].x(), n[2].x(), n[3].x()};
+  const Float4 ny = seabed ? -hy * inv_norm : Float4{n[0].y(), n[1].y(), n[2].y(), n[3].y()};
+  const Float4 nz = seabed ? 1.0f * inv_norm : Float4{n[0].z(), n[1].z(), n[2].z(), n[3].z()};
   const Float4 distance = t * length;
   const Float4 px = origin_.x() + t * dx, py = origin_.y() + t * dy, pz = origin_.z() + t * dz;
   // A pixel's footprint at the hit, widened for oblique views: fronto / sqrt(cos), the geometric mean

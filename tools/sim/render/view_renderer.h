@@ -78,6 +78,7 @@ class ViewRenderer {
   struct RowHits {
     std::array<SceneHit, kTile> hit;
     std::array<Eigen::Vector3f, kTile> d;
+    std::array<Eigen::Vector2f, kTile> slope;  // the relief's slope at a seabed hit (normalised when shaded)
   };
   void intersectRow(int v, int u0, int u1, RowHits* row) const;
   // Radiance of pixels (u + i, v), i < 4, into radiance_: the shading equation (class comment) with the
@@ -85,7 +86,8 @@ class ViewRenderer {
   // divisions and the lamp distances' square roots) and per pixel for the albedo and the water
   // transmittance (B, G, R in the lanes of one vector there). Every lane makes the same operations in the
   // same order as a scalar evaluation, so the result does not depend on the grouping.
-  void shadePacket(int v, int u, int count, const SceneHit* hit, const Eigen::Vector3f* d) const;
+  void shadePacket(int v, int u, int count, const SceneHit* hit, const Eigen::Vector3f* d,
+                   const Eigen::Vector2f* slope) const;
 
   CameraConfig camera_;
   float inv_fx_ = 1.0f;
