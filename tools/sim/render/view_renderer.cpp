@@ -218,17 +218,22 @@ void ViewRenderer::shadePacket(int v, int u, int count, const SceneHit* hit, con
   const Float4 inv_q01 = 1.0f / (q0 * q1);
   const Float4 irradiance[2] = {optics_.lamp_intensity * n_l[0] * axis_l[0] * (q1 * inv_q01),
                                 optics_.lamp_intensity * n_l[1] * axis_l[1] * (q0 * inv_q01)};
-  const Float4 lamp_path[2] = {sqrt4(dl2[0]) + distance, sqrt4(dl2[1]) + distance};
+  // A lamp behind the surface or the beam contributes nothing: its irradiance is 0 (adding 0 t leaves
+  // the sum's bits as skipping it would).
+  const Float4 lit[2] = {n_l[0] <= 0.0f || axis_l[0] <= 0.0f ? Float4{} : irradiance[0],
+                         n_l[1] <= 0.0f || axis_l[1] <= 0.0f ? Float4{} : irradiance[1]};
+  const WaterPath::Place4 lamp_path[2] = {water_.locate4(sqrt4(dl2[0]) + distance),
+                                          water_.locate4(sqrt4(dl2[1]) + distance)};
+  const WaterPath::Place4 view_path = water_.locate4(distance);
   float* out = radiance_ + (static_cast<std::size_t>(v) * camera_.width_px + u) * channels_;
   for (int i = 0; i < count; ++i, out += channels_) {
     Eigen::Vector4f L = backscatter_;
     if (hit[i].primitive != -2) {
       Eigen::Vector4f E = Eigen::Vector4f::Zero();
-      for (int k = 0; k < 2; ++k) {
-        if (n_l[k][i] <= 0.0f || axis_l[k][i] <= 0.0f) continue;
-        E += irradiance[k][i] * water_.transmittance(lamp_path[k][i]);
-      }
-      const Eigen::Vector4f veil = Eigen::Vector4f::Ones() - water_.transmittance(distance[i]);
+      E += lit[0][i] * water_.interpolate(lamp_path[0].row[i], lamp_path[0].fraction[i]);
+      E += lit[1][i] * water_.interpolate(lamp_path[1].row[i], lamp_path[1].fraction[i]);
+      const Eigen::Vector4f veil =
+          Eigen::Vector4f::Ones() - water_.interpolate(view_path.row[i], view_path.fraction[i]);
       const Eigen::Vector4f albedo = scene_->albedoAt(hit[i], origin_, d[i], footprint2[i]);
       L = albedo.cwiseProduct(E) + backscatter_.cwiseProduct(veil);
     }

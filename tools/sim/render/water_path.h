@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 
+#include "tools/sim/render/float4.h"
 #include "tools/sim/render/water_optics.h"
 
 namespace deepnav::sim {
@@ -27,8 +28,23 @@ class WaterPath {
   Eigen::Vector4f transmittance(float x_m) const {
     const float f = std::min(std::max(x_m, 0.0f) * (1.0f / kStep_m), last_);
     const int i = static_cast<int>(f);
-    const float a = f - static_cast<float>(i);
-    return table_[i] + a * (table_[i + 1] - table_[i]);
+    return interpolate(i, f - static_cast<float>(i));
+  }
+  // The same in two steps, for four path lengths in the lanes: where they fall in the table (lane-wise,
+  // the same operations as transmittance()), then each lane's interpolation.
+  struct Place4 {
+    Int4 row;
+    Float4 fraction;
+  };
+  Place4 locate4(Float4 x_m) const {
+    const Float4 clamped_low = x_m < 0.0f ? Float4{} : x_m;  // std::max(x, 0)
+    const Float4 scaled = clamped_low * (1.0f / kStep_m);
+    const Float4 f = last_ < scaled ? Float4{} + last_ : scaled;  // std::min(f, last)
+    const Int4 row = __builtin_convertvector(f, Int4);
+    return {row, f - __builtin_convertvector(row, Float4)};
+  }
+  Eigen::Vector4f interpolate(int row, float fraction) const {
+    return table_[row] + fraction * (table_[row + 1] - table_[row]);
   }
 
  private:
