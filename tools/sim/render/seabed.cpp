@@ -80,9 +80,11 @@ bool Seabed::intersectSlope(const Eigen::Vector3f& o, const Eigen::Vector3f& d, 
   const float inv_z = d.z() != 0.0f ? 1.0f / d.z() : INFINITY;
   // The part of the ray inside the slab [min, max height].
   float t0 = t_min, t1 = t_max;
+  float entry = -INFINITY, exit = INFINITY;  // where the ray enters and leaves the slab
   if (d.z() < 0.0f) {
-    t0 = std::max(t0, (max_height_m_ - o.z()) * inv_z);
-    t1 = std::min(t1, (min_height_m_ - o.z()) * inv_z);
+    entry = (max_height_m_ - o.z()) * inv_z, exit = (min_height_m_ - o.z()) * inv_z;
+    t0 = std::max(t0, entry);
+    t1 = std::min(t1, exit);
   } else if (o.z() > max_height_m_) {
     return false;
   }
@@ -101,7 +103,7 @@ bool Seabed::intersectSlope(const Eigen::Vector3f& o, const Eigen::Vector3f& d, 
     return false;
   }
   if (t_plane > t0 && t_plane < s0) return flat();  // flat ground before the relief
-  if (march(o, d, s0, s1, hint_t, t, slope)) return true;
+  if (march(o, d, s0, s1, s0 == entry, s1 == exit, hint_t, t, slope)) return true;
   if (t_plane > s1 && t_plane < t1) return flat();  // flat ground after it
   return false;
 }
@@ -126,8 +128,8 @@ void Seabed::clipToSquare(const Eigen::Vector3f& o, const Eigen::Vector3f& d, fl
   }
 }
 
-bool Seabed::march(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t0, float t1, float hint_t, float* t,
-                   Eigen::Vector2f* slope) const {
+bool Seabed::march(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t0, float t1, bool t0_on_slab,
+                   bool t1_on_slab, float hint_t, float* t, Eigen::Vector2f* slope) const {
   const auto hitAt = [&](float t_hit) {
     *t = t_hit;
     float h = 0.0f;
@@ -137,11 +139,12 @@ bool Seabed::march(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t0,
   if (descendsSteeply(d)) {
     // The ray drops faster than the relief can rise: ray z - h decreases monotonically, so [t0, t1]
     // holds at most one crossing. At the slab's entry (z = max height) the ray is above the relief and
-    // at its exit (z = min height) below: no evaluation needed there; elsewhere (clipped by a nearer
-    // hit or the relief square) check the sign. Start from where the ray meets z = 0.
+    // at its exit (z = min height) below: no evaluation needed there (decided on t, not on the ray's z,
+    // which rounds to either side of the slab's face); elsewhere (clipped by t_min, a nearer hit or
+    // the relief square) check the sign where the ray's z does not already tell it.
     // Start from a neighbouring ray's hit when it lies in the bracket, else where the ray meets z = 0.
-    if (o.z() + t0 * d.z() < max_height_m_ && above(o, d, t0) <= 0.0f) return hitAt(t0);
-    if (o.z() + t1 * d.z() > min_height_m_ && above(o, d, t1) > 0.0f) return false;
+    if (!t0_on_slab && o.z() + t0 * d.z() < max_height_m_ && above(o, d, t0) <= 0.0f) return hitAt(t0);
+    if (!t1_on_slab && o.z() + t1 * d.z() > min_height_m_ && above(o, d, t1) > 0.0f) return false;
     const float start = hint_t > t0 && hint_t < t1 ? hint_t : std::clamp(-o.z() / d.z(), t0, t1);
     return refine(o, d, t0, t1, start, t, slope);
   }

@@ -51,8 +51,10 @@ class Seabed {
   float maxHeight_m() const { return max_height_m_; }
 
  private:
-  bool march(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t0, float t1, float hint_t, float* t,
-             Eigen::Vector2f* slope) const;
+  // t0_on_slab, t1_on_slab: that end of [t0, t1] is where the ray enters (leaves) the slab, so the ray
+  // is above (below) the relief there.
+  bool march(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t0, float t1, bool t0_on_slab, bool t1_on_slab,
+             float hint_t, float* t, Eigen::Vector2f* slope) const;
   static bool insideSquare(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t);
   static void clipToSquare(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float* s0, float* s1);
   bool descendsSteeply(const Eigen::Vector3f& d) const;  // faster than the steepest relief slope
