@@ -143,4 +143,26 @@ bool Scene::intersect(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float 
   return found;
 }
 
+void Scene::albedo4(const SceneHit* hit, const Eigen::Vector3f& o, const Eigen::Vector3f* d, Float4 px, Float4 py,
+                    Float4 footprint2_m2, Eigen::Vector4f out[4]) const {
+  const int p0 = hit[0].primitive;
+  const bool same = p0 == hit[1].primitive && p0 == hit[2].primitive && p0 == hit[3].primitive;
+  if (same && p0 == kSeabed) {
+    seabed_.albedo4(px, py, footprint2_m2, out);
+    return;
+  }
+  if (same && p0 >= 0) {
+    const Material& m = materials_[primitives_[p0].material];
+    const bool front = !(hit[0].local.back || hit[1].local.back || hit[2].local.back || hit[3].local.back);
+    if (m.kind == MaterialKind::kRectTexture && front) {  // albedoAt's rect case, lane-wise
+      const Float4 x{hit[0].local.p.x(), hit[1].local.p.x(), hit[2].local.p.x(), hit[3].local.p.x()};
+      const Float4 y{hit[0].local.p.y(), hit[1].local.p.y(), hit[2].local.p.y(), hit[3].local.p.y()};
+      textures_[m.texture].sample4((x - m.u0_m) * m.texels_per_m, (m.v0_m - y) * m.texels_per_m,
+                                   footprint2_m2 * m.texels_per_m * m.texels_per_m, out);
+      return;
+    }
+  }
+  for (int i = 0; i < 4; ++i) out[i] = hit[i].primitive != -2 ? albedoAt(hit[i], o, d[i], footprint2_m2[i]) : Eigen::Vector4f::Zero();
+}
+
 }  // namespace deepnav::sim

@@ -56,6 +56,11 @@ class Scene {
   // there, to choose the texture level.
   Eigen::Vector4f albedoAt(const SceneHit& hit, const Eigen::Vector3f& o, const Eigen::Vector3f& d,
                            float footprint2_m2) const;
+  // The same for four hits (lanes) at once, bit for bit: sampled four at a time (TextureMap::sample4) when
+  // all four are on the seabed or on the front of one textured rect, else per hit. px, py: the hits'
+  // o + t d in P; d: the four rays.
+  void albedo4(const SceneHit* hit, const Eigen::Vector3f& o, const Eigen::Vector3f* d, Float4 px, Float4 py,
+               Float4 footprint2_m2, Eigen::Vector4f out[4]) const;
 
  private:
   bool buildPanel(const Scenario& scenario, const PanelDescription& panel, double quiet_zone_m, std::uint32_t seed,

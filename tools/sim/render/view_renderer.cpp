@@ -225,6 +225,8 @@ void ViewRenderer::shadePacket(int v, int u, int count, const SceneHit* hit, con
   const WaterPath::Place4 lamp_path[2] = {water_.locate4(sqrt4(dl2[0]) + distance),
                                           water_.locate4(sqrt4(dl2[1]) + distance)};
   const WaterPath::Place4 view_path = water_.locate4(distance);
+  Eigen::Vector4f albedo[4];
+  scene_->albedo4(hit, origin_, d, px, py, footprint2, albedo);
   float* out = radiance_ + (static_cast<std::size_t>(v) * camera_.width_px + u) * channels_;
   for (int i = 0; i < count; ++i, out += channels_) {
     Eigen::Vector4f L = backscatter_;
@@ -234,8 +236,7 @@ void ViewRenderer::shadePacket(int v, int u, int count, const SceneHit* hit, con
       E += lit[1][i] * water_.interpolate(lamp_path[1].row[i], lamp_path[1].fraction[i]);
       const Eigen::Vector4f veil =
           Eigen::Vector4f::Ones() - water_.interpolate(view_path.row[i], view_path.fraction[i]);
-      const Eigen::Vector4f albedo = scene_->albedoAt(hit[i], origin_, d[i], footprint2[i]);
-      L = albedo.cwiseProduct(E) + backscatter_.cwiseProduct(veil);
+      L = albedo[i].cwiseProduct(E) + backscatter_.cwiseProduct(veil);
     }
     const float cos2 = inv_length[i] * inv_length[i];
     L *= cos2 * cos2;  // cos^4 of the angle off the optical axis
