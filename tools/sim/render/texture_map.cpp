@@ -32,7 +32,10 @@ void TextureMap::buildMips() {
     scale_.push_back(static_cast<float>(next.cols) / static_cast<float>(levels_[0].cols));
     levels_.push_back(next);
   }
+  std::size_t words = 0;
+  for (const cv::Mat& level : levels_) words += static_cast<std::size_t>(level.cols + 2) * (level.rows + 2);
   texels_.clear();
+  texels_.reserve(words);
   view_.clear();
   for (const cv::Mat& level : levels_) packLevel(level);
 }
@@ -45,12 +48,14 @@ void TextureMap::packLevel(const cv::Mat& bgr) {
   // The texel a border position repeats: the opposite edge when wrapping, the edge itself when clamping.
   const auto source = [&](int i, int n) { return i < 0 ? (wrap_ ? n - 1 : 0) : i >= n ? (wrap_ ? 0 : n - 1) : i; };
   for (int y = -1; y <= rows; ++y) {
-    const cv::Vec3b* row = bgr.ptr<cv::Vec3b>(source(y, rows));
-    for (int x = -1; x <= cols; ++x) {
-      const cv::Vec3b& t = row[source(x, cols)];
-      const std::uint8_t bytes[4] = {t[0], t[1], t[2], 0};
-      std::memcpy(&texels_[offset + static_cast<std::size_t>(y + 1) * stride + (x + 1)], bytes, sizeof(bytes));
+    const std::uint8_t* row = bgr.ptr<std::uint8_t>(source(y, rows));
+    std::uint32_t* out = &texels_[offset + static_cast<std::size_t>(y + 1) * stride];
+    for (int x = 0; x < cols; ++x) {
+      const std::uint8_t bytes[4] = {row[3 * x], row[3 * x + 1], row[3 * x + 2], 0};
+      std::memcpy(&out[x + 1], bytes, sizeof(bytes));
     }
+    out[0] = out[source(-1, cols) + 1];
+    out[cols + 1] = out[source(cols, cols) + 1];
   }
 }
 
