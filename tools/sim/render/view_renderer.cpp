@@ -109,7 +109,8 @@ void ViewRenderer::listCandidates(const Cone& cone) {
     if (!inside) continue;
     // Insertion keeps the list nearest first.
     const Eigen::Matrix3f& R = prims[i].R_local_panel;
-    candidates_.push_back({i, near_m_[i], R * ray_base_, R * ray_du_, R * ray_dv_});
+    const auto lanes = [](const Eigen::Vector3f& v) { return Float4{v.x(), v.y(), v.z(), 0.0f}; };
+    candidates_.push_back({i, near_m_[i], lanes(R * ray_base_), lanes(R * ray_du_), lanes(R * ray_dv_)});
     for (int k = static_cast<int>(candidates_.size()) - 1; k > 0 && candidates_[k - 1].near_m > near_m_[i]; --k)
       std::swap(candidates_[k - 1], candidates_[k]);
   }
@@ -141,7 +142,8 @@ void ViewRenderer::intersectRow(int v, int u0, int u1, RowHits* row) const {
     for (int k = 0; k < count; ++k) {
       const Candidate& c = candidates_[k];
       if (c.near_m * inv_len >= t_best) break;
-      const Eigen::Vector3f d_local = c.base + uf * c.du + vf * c.dv;
+      const Float4 d_lanes = c.base + uf * c.du + vf * c.dv;  // as Eigen's sum of the three, per lane
+      const Eigen::Vector3f d_local(d_lanes[0], d_lanes[1], d_lanes[2]);
       if (intersectPrimitive(origin_local_[c.primitive], d_local, prims[c.primitive], kTMin, t_best, &local)) {
         t_best = local.t;
         hit.primitive = c.primitive;
