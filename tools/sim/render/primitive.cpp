@@ -16,6 +16,9 @@ void placePrimitive(const Eigen::Matrix3f& R_panel_local, const Eigen::Vector3f&
   if (p->kind == ShapeKind::kEllipsoid) lo = -hi;
   p->bound_centre_in_panel_m = p_local_in_panel_m + R_panel_local * (0.5f * (lo + hi));
   p->bound_radius_m = 0.5f * (hi - lo).norm();
+  if (p->kind == ShapeKind::kRect) lo.z() = hi.z() = 0.0f;
+  p->box_centre_local = 0.5f * (lo + hi);
+  p->box_half_local = 0.5f * (hi - lo);
 }
 
 }  // namespace deepnav::sim

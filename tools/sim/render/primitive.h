@@ -24,6 +24,10 @@ struct Primitive {
   Eigen::Vector3f hi = Eigen::Vector3f::Zero();
   Eigen::Vector3f bound_centre_in_panel_m = Eigen::Vector3f::Zero();  // bounding sphere (culling)
   float bound_radius_m = 0.0f;
+  // The box the shape fills in L (rect: zero thickness; round shapes: their radius in x and y), as
+  // centre and half extents: the renderer culls it against each tile's frustum.
+  Eigen::Vector3f box_centre_local = Eigen::Vector3f::Zero();
+  Eigen::Vector3f box_half_local = Eigen::Vector3f::Zero();
 };
 
 // Sets the pose (and the derived transpose and bounding sphere) of a primitive.

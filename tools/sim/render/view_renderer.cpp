@@ -87,9 +87,30 @@ ViewRenderer::Cone ViewRenderer::tileCone(int u0, int v0, int u1, int v1) const 
     corners[k] = (ray_base_ + us[k & 1] * ray_du_ + vs[k >> 1] * ray_dv_).normalized();
     sum += corners[k];
   }
-  Cone cone{sum.normalized(), 1.0f};
+  Cone cone{sum.normalized(), 1.0f, {}};
   for (const auto& c : corners) cone.cos_half_angle = std::min(cone.cos_half_angle, cone.axis.dot(c));
+  // Corners in order around the tile: 0 (u0, v0), 1 (u1, v0), 3 (u1, v1), 2 (u0, v1).
+  constexpr int kAround[5] = {0, 1, 3, 2, 0};
+  for (int k = 0; k < 4; ++k) {
+    const Eigen::Vector3f n = corners[kAround[k]].cross(corners[kAround[k + 1]]);
+    cone.side[k] = n.dot(cone.axis) >= 0.0f ? n : Eigen::Vector3f(-n);
+  }
   return cone;
+}
+
+bool ViewRenderer::outsideTile(const Cone& cone, int primitive) const {
+  const Primitive& p = scene_->primitives()[primitive];
+  const Eigen::Vector3f to_centre = p.box_centre_local - origin_local_[primitive];
+  const float reach_scale = to_centre.norm() + p.box_half_local.norm();
+  for (const Eigen::Vector3f& side : cone.side) {
+    // The box's farthest point into the side's inner half-space: centre plus |n| . half extents. Outside
+    // only with a margin far above the rounding of the per-pixel tests (pixel centres also lie half a
+    // pixel inside the tile's edge rays).
+    const Eigen::Vector3f n = p.R_local_panel * side;
+    const float reach = n.dot(to_centre) + n.cwiseAbs().dot(p.box_half_local);
+    if (reach < -1e-4f * n.norm() * reach_scale) return true;
+  }
+  return false;
 }
 
 void ViewRenderer::listCandidates(const Cone& cone) {
@@ -106,7 +127,7 @@ void ViewRenderer::listCandidates(const Cone& cone) {
       const float sin_r = r / dist, cos_r = std::sqrt(1.0f - sin_r * sin_r);
       inside = cone.axis.dot(to_centre) / dist >= cone.cos_half_angle * cos_r - sin_half * sin_r;
     }
-    if (!inside) continue;
+    if (!inside || outsideTile(cone, i)) continue;
     // Insertion keeps the list nearest first.
     const Eigen::Matrix3f& R = prims[i].R_local_panel;
     const auto lanes = [](const Eigen::Vector3f& v) { return Float4{v.x(), v.y(), v.z(), 0.0f}; };

@@ -52,10 +52,15 @@ class ViewRenderer {
   void renderTileRow(int row);
 
  private:
+  // The rays of a tile: the cone around their mean for the bounding spheres, and the four planes
+  // through the camera and two adjacent corner rays (normals pointing inside) for the boxes.
   struct Cone {
     Eigen::Vector3f axis;
     float cos_half_angle;
+    std::array<Eigen::Vector3f, 4> side;
   };
+  // True when the primitive's box lies wholly outside one side of the tile (no pixel can hit it).
+  bool outsideTile(const Cone& cone, int primitive) const;
   // The ray of pixel (u, v) from origin_ in the panel frame, scaled so that its component along the
   // optical axis is 1 (the ray parameter of a hit is its depth): the one place a camera model enters.
   // Pinhole: d = R_panel_cam (x_n, y_n, 1), linear in (u, v). A non-pinhole model (a flat port's
