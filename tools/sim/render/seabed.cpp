@@ -74,7 +74,7 @@ bool Seabed::intersect(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float
   return true;
 }
 
-bool Seabed::intersectSlope(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t_min, float t_max, float* t,
+__attribute__((flatten)) bool Seabed::intersectSlope(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t_min, float t_max, float* t,
                             Eigen::Vector2f* slope, float hint_t) const {
   // Reciprocal once: divisions were most of the cost of a seabed pixel.
   const float inv_z = d.z() != 0.0f ? 1.0f / d.z() : INFINITY;
