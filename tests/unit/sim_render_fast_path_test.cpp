@@ -1,5 +1,5 @@
-// The renderer's speed-ups change nothing visible: its tile culling, per-pixel tables and 4-lane
-// shading against a brute-force evaluation of the documented image-formation model (every primitive
+// The renderer's speed-ups change nothing visible: its tile culling (bounding spheres and the tiles'
+// side planes), per-pixel tables, packets of four pixels and 4-lane shading against a brute-force evaluation of the documented image-formation model (every primitive
 // tested per ray, std::exp), and its second thread against the single-threaded render, bit for bit.
 #include <algorithm>
 #include <cmath>
@@ -97,6 +97,15 @@ TEST(SimRenderFastPath, PanelViewWithFishMatchesBruteForceShadingOfTheModel) {
   Scenario s;
   s.water.fish_count = 8;
   expectFastPathMatchesBruteForce(s, tickFacingFace(s, 1, 1.6, 0.9, 1.2, 35.0, 5.0, 57'000'000));
+}
+
+TEST(SimRenderFastPath, ImageSizeNotAMultipleOfTileOrPacketMatchesBruteForce) {
+  // 301 x 203 px: each row's last tile is 13 px wide, so its last packet of four holds one pixel, and the
+  // last tile row is 11 rows high; a view of the valves face's corner with seabed and water.
+  Scenario s;
+  s.camera.width_px = 301, s.camera.height_px = 203;
+  s.camera.fx_px = s.camera.fy_px = 300.0, s.camera.cx_px = 150.0, s.camera.cy_px = 101.0;
+  expectFastPathMatchesBruteForce(s, tickFacingFace(s, 0, 1.8, 0.6, 1.2, 25.0, 15.0));
 }
 
 TEST(SimRenderFastPath, SecondThreadGivesTheSameImagesAndTruth) {
