@@ -44,6 +44,18 @@ void CdrWriter::f64Array(const double* data, size_t count) {
   raw(data, count * sizeof(double));
 }
 
+void CdrWriter::u16Array(const uint16_t* data, size_t count) {
+  if (count == 0) return;
+  align(2);
+  raw(data, count * sizeof(uint16_t));
+}
+
+void CdrWriter::f32Array(const float* data, size_t count) {
+  if (count == 0) return;
+  align(4);
+  raw(data, count * sizeof(float));
+}
+
 void CdrWriter::u8Sequence(const uint8_t* data, size_t count) {
   sequenceLength(count);
   raw(data, count);

@@ -39,6 +39,10 @@ class CdrWriter {
   // Fixed arrays (T[N]): elements only.
   void u8Array(const uint8_t* data, size_t count);
   void f64Array(const double* data, size_t count);
+  // Elements of 2 and 4 bytes (little-endian host), aligned once: the same bytes as u16() / f32() per
+  // element, for image rows.
+  void u16Array(const uint16_t* data, size_t count);
+  void f32Array(const float* data, size_t count);
   // uint8[] sequence: count, then the bytes.
   void u8Sequence(const uint8_t* data, size_t count);
 
