@@ -162,7 +162,8 @@ void Scene::albedo4(const SceneHit* hit, const Eigen::Vector3f& o, const Eigen::
       return;
     }
   }
-  for (int i = 0; i < 4; ++i) out[i] = hit[i].primitive != -2 ? albedoAt(hit[i], o, d[i], footprint2_m2[i]) : Eigen::Vector4f::Zero();
+  for (int i = 0; i < 4; ++i)
+    out[i] = hit[i].primitive != -2 ? albedoAt(hit[i], o, d[i], footprint2_m2[i]) : Eigen::Vector4f::Zero();
 }
 
 }  // namespace deepnav::sim

@@ -35,13 +35,14 @@ class Seabed {
   // normalises (normalOfSlope) four pixels at a time.
   bool intersectSlope(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t_min, float t_max, float* t,
                       Eigen::Vector2f* slope, float hint_t) const;
-  // The unit normal (-hx, -hy, 1) / |(-hx, -hy, 1)| of a slope.
+  // The unit normal (-hx, -hy, 1) / |(-hx, -hy, 1)| of a slope: that of the bilinear patch the ray met
+  // (its slope changes across cell edges by at most a few thousandths with this gentle relief: no
+  // visible facets).
   static Eigen::Vector3f normalOfSlope(float hx, float hy) {
     return Eigen::Vector3f(-hx, -hy, 1.0f) * (1.0f / std::sqrt(1.0f + hx * hx + hy * hy));
   }
 
   float heightAt(float x_m, float y_m) const;
-  Eigen::Vector3f normalAt(float x_m, float y_m) const;
   // Squared pixel size; B, G, R in lanes 0-2 (TextureMap::sample). Inline: once per seabed pixel.
   Eigen::Vector4f albedoAt(float x_m, float y_m, float footprint2_m2) const {
     constexpr float kTexelsPerM = kTextureTexels / kTexturePeriod_m;

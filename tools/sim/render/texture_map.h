@@ -49,9 +49,10 @@ class TextureMap {
  private:
 
   // One level for the sampler: texels as 4 bytes (B, G, R, 0) in a grid with a one-texel border, so that
-  // texel (x, y), x in [-1, cols], y in [-1, rows], is at texels_[offset + (y + 1) stride + x + 1]. The border repeats
-  // the opposite edge (wrap) or the edge itself (clamp): the bilinear pair (x0, x0 + 1) is then always two
-  // adjacent words (one 8-byte load per row) once x0 is wrapped into [0, cols) or clamped into [-1, cols).
+  // texel (x, y), x in [-1, cols], y in [-1, rows], is at texels_[offset + (y + 1) stride + x + 1]. The
+  // border repeats the opposite edge (wrap) or the edge itself (clamp): the bilinear pair (x0, x0 + 1) is
+  // then always two adjacent words (one 8-byte load per row) once x0 is wrapped into [0, cols) or clamped
+  // into [-1, cols).
   struct Level {
     std::ptrdiff_t offset, stride;
     int cols, rows;

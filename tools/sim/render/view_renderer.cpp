@@ -74,7 +74,7 @@ void ViewRenderer::renderTileRow(int row) {
   for (int u0 = 0; u0 < w; u0 += kTile) {
     const int u1 = std::min(u0 + kTile, w);
     listCandidates(tileCone(u0, v0, u1, v1));
-    renderTile(u0, v0, u1, v1, lamps_, radiance_, depth_m_);
+    renderTile(u0, v0, u1, v1);
   }
 }
 
@@ -137,11 +137,12 @@ void ViewRenderer::listCandidates(const Cone& cone) {
   }
 }
 
-void ViewRenderer::renderTile(int u0, int v0, int u1, int v1, const LampSet&, float*, float*) {
+void ViewRenderer::renderTile(int u0, int v0, int u1, int v1) {
   RowHits row;
   for (int v = v0; v < v1; ++v) {
     intersectRow(v, u0, u1, &row);
-    for (int i = 0; i < u1 - u0; i += 4) shadePacket(v, u0 + i, std::min(4, u1 - u0 - i), &row.hit[i], &row.d[i], &row.slope[i]);
+    for (int i = 0; i < u1 - u0; i += 4)
+      shadePacket(v, u0 + i, std::min(4, u1 - u0 - i), &row.hit[i], &row.d[i], &row.slope[i]);
   }
 }
 

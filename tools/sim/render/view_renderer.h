@@ -66,13 +66,13 @@ class ViewRenderer {
   // Pinhole: d = R_panel_cam (x_n, y_n, 1), linear in (u, v). A non-pinhole model (a flat port's
   // refraction, tools/sim/render/flat_port.*) replaces this and must then also replace the two places
   // that rely on the linearity: tileCone() (corner rays bound the tile) and the per-candidate local
-  // direction in renderTile() (c.base + u c.du + v c.dv = R_local_panel d), and give origin_ per pixel.
+  // direction in intersectRow() (c.base + u c.du + v c.dv = R_local_panel d), and give origin_ per pixel.
   Eigen::Vector3f pixelRay(int u, int v) const {
     return ray_base_ + static_cast<float>(u) * ray_du_ + static_cast<float>(v) * ray_dv_;
   }
   Cone tileCone(int u0, int v0, int u1, int v1) const;
   void listCandidates(const Cone& cone);
-  void renderTile(int u0, int v0, int u1, int v1, const LampSet& lamps, float* radiance, float* depth_m);
+  void renderTile(int u0, int v0, int u1, int v1);
   // Per pixel, pose-independent: the ray's length per unit depth |(x_n, y_n, 1)| (a hit's distance is
   // depth times it) and its inverse (cos of the angle off the axis, for the vignetting and the view angle).
   struct PixelRay {

@@ -25,13 +25,8 @@ class WaterPath {
     }
     last_ = static_cast<float>(n - 2);
   }
-  Eigen::Vector4f transmittance(float x_m) const {
-    const float f = std::min(std::max(x_m, 0.0f) * (1.0f / kStep_m), last_);
-    const int i = static_cast<int>(f);
-    return interpolate(i, f - static_cast<float>(i));
-  }
-  // The same in two steps, for four path lengths in the lanes: where they fall in the table (lane-wise,
-  // the same operations as transmittance()), then each lane's interpolation.
+  // In two steps, for four path lengths in the lanes (the shading's packets): where each falls in the
+  // table, lane-wise (clamped to [0, the table's end]), then each lane's interpolation.
   struct Place4 {
     Int4 row;
     Float4 fraction;
