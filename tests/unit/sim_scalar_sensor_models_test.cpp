@@ -33,14 +33,14 @@ TEST(SimCompassModel, HeadingIsClockwiseFromNorthWithBiasAndDeclination) {
   c.declination_deg = 5.0;
   CompassModel compass;
   std::string error;
-  ASSERT_TRUE(compass.init(c, 1, &error));
+  ASSERT_TRUE(compass.init(c, PanelGeometry{}, 0.0, 1, &error));
   // Facing east (yaw 0): true heading 90 deg; magnetic = 90 - 5; plus 2 deg of bias.
   EXPECT_NEAR(compass.measure(yawed(0.0), 0).heading_rad, 87.0 * kDegToRad, 1e-12);
   // Facing north-west (yaw 135 deg): true heading 315 deg.
   EXPECT_NEAR(compass.measure(yawed(0.75 * kPi), 0).heading_rad, 312.0 * kDegToRad, 1e-12);
   EXPECT_FALSE(compass.measure(yawed(0.0), 0).is_true);
   c.true_north = true;  // a gyrocompass ignores the declination
-  ASSERT_TRUE(compass.init(c, 1, &error));
+  ASSERT_TRUE(compass.init(c, PanelGeometry{}, 0.0, 1, &error));
   EXPECT_NEAR(compass.measure(yawed(0.0), 0).heading_rad, 92.0 * kDegToRad, 1e-12);
   EXPECT_TRUE(compass.measure(yawed(0.0), 0).is_true);
 }
@@ -51,7 +51,7 @@ TEST(SimCompassModel, NoiseStdMatchesAndHeadingWraps) {
   c.bias_deg = 0.0;
   CompassModel compass;
   std::string error;
-  ASSERT_TRUE(compass.init(c, 9, &error));
+  ASSERT_TRUE(compass.init(c, PanelGeometry{}, 0.0, 9, &error));
   const KinematicState north = yawed(kPi / 2.0);  // heading 0: noise wraps around 2 pi
   std::vector<double> err;
   for (int k = 0; k < 20000; ++k) {

@@ -5,6 +5,7 @@
 #include "tools/sim/environment_config.h"
 #include "tools/sim/faults/fault_spec.h"
 #include "tools/sim/panel_geometry.h"
+#include "tools/sim/sensor_timing.h"
 #include "tools/sim/sensors/attitude_model.h"
 #include "tools/sim/sensors/camera_rig.h"
 #include "tools/sim/sensors/compass_model.h"
@@ -32,6 +33,7 @@ struct Scenario {
   DepthConfig depth;
   AttitudeConfig attitude;
   CameraConfig camera;
+  TimingConfig timing;  // per-stream latency, clock offset and drift of the stamps
   std::vector<FaultSpec> faults;
 
   bool operator==(const Scenario&) const = default;

@@ -47,7 +47,9 @@ bool SensorSimulator::init(const Scenario& scenario, std::uint64_t seed, std::st
   if (!trajectory_.init(scenario.trajectory, scenario.panel, env.odom_origin_depth_m, env.gravity_mps2, error) ||
       !imu_.init(scenario.imu, noiseSeed(seed, SimStream::kImu), error) ||
       !dvl_.init(scenario.dvl, env.seabedZInOdom_m(), noiseSeed(seed, SimStream::kDvl), error) ||
-      !compass_.init(scenario.compass, noiseSeed(seed, SimStream::kCompass), error) ||
+      (scenario.dvl.ray_cast && !dvl_.attachScene(scenario, seed, error)) ||  // the renderer's scene and seed
+      !compass_.init(scenario.compass, scenario.panel, env.seabedZInOdom_m(), noiseSeed(seed, SimStream::kCompass),
+                     error) ||
       !depth_.init(scenario.depth, env, noiseSeed(seed, SimStream::kDepth), error) ||
       !attitude_.init(scenario.attitude, noiseSeed(seed, SimStream::kAttitude), error) ||
       !camera_.init(scenario.camera, error) || !faults_.init(scenario.faults, error))
@@ -70,6 +72,8 @@ bool SensorSimulator::init(const Scenario& scenario, std::uint64_t seed, std::st
     c.fault_rng = NormalRng(NormalRng::subSeed(seed, kFaultStreamBase + static_cast<std::uint64_t>(i)));
   }
   end_us_ = sToUs(scenario.duration_s);
+  timing_active_ = scenario.timing.active();
+  timing_advance_us_ = timing_active_ ? scenario.timing.maxAdvance_us(end_us_) : 0;
   pending_.clear();
   pending_.reserve(4 * kSimStreamCount);
   order_ = 0;
@@ -95,7 +99,7 @@ int SensorSimulator::earliestChannel() const {
 
 bool SensorSimulator::next(SimEvent* out) {
   if (!initialised_) return false;
-  const TimeUs horizon_us = faults_.maxJitter_us();
+  const TimeUs horizon_us = faults_.maxJitter_us() + timing_advance_us_;
   while (true) {
     const int c = earliestChannel();
     // Every event not yet produced will be stamped at or after due - horizon: the front is safe before that.
@@ -113,6 +117,10 @@ void SensorSimulator::produce(int channel) {
   const SimStream stream = static_cast<SimStream>(channel);
   const std::uint64_t index = c.next_index++;
   const TimeUs t_us = static_cast<TimeUs>(std::llround(static_cast<double>(index) * 1e6 / c.rate_hz));
+  if (stream == SimStream::kDvl && !dvl_.pingDue(t_us)) {  // still waiting for the last ping's echo
+    ++c.not_pinged;
+    return;
+  }
   const KinematicState truth = trajectory_.stateAt(usToS(t_us));
   // Measure first, even if the sample is then dropped, so faults never shift the noise sequence.
   SimSample sample = measure(stream, truth, t_us, index);
@@ -127,7 +135,8 @@ void SensorSimulator::produce(int channel) {
     if (d.garbage) fillGarbage(c.fault_rng, &sample);
     c.last = sample;
     c.has_last = true;
-    const TimeUs stamp_us = t_us + d.jitter_us;
+    TimeUs stamp_us = t_us + d.jitter_us;
+    if (timing_active_) stamp_us += scenario_.timing.of(stream).shift_us(t_us);  // content stays at t_us
     std::visit([stamp_us](auto& s) { s.t_us = stamp_us; }, sample);
   }
   ++c.emitted;
