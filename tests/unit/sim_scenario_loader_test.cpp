@@ -78,7 +78,7 @@ faults:
 TEST(SimScenarioLoader, RejectsAnUnknownKeyByNameAndListsTheAllowedOnes) {
   const std::string error = parseError("imu:\n  rate_hz: 100\n  gyro_nosie: 1\n");
   EXPECT_NE(error.find("test.yaml: unknown key 'imu.gyro_nosie' (line 3)"), std::string::npos) << error;
-  EXPECT_NE(error.find("allowed keys: enabled, rate_hz, gyro_noise_deg_per_sqrt_h"), std::string::npos) << error;
+  EXPECT_NE(error.find("allowed keys: grade, enabled, rate_hz, gyro_noise_deg_per_sqrt_h"), std::string::npos) << error;
   EXPECT_NE(parseError("camra: {}\n").find("unknown key 'camra'"), std::string::npos);
 }
 

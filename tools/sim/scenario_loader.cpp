@@ -7,6 +7,7 @@
 #include "tools/sim/sensors/attitude_grades.h"
 #include "tools/sim/sensors/compass_grades.h"
 #include "tools/sim/sensors/depth_grades.h"
+#include "tools/sim/sensors/imu_grades.h"
 #include "tools/sim/trajectory.h"
 #include "tools/sim/yaml_section.h"
 
@@ -67,15 +68,30 @@ void readTrajectory(YamlSection s, TrajectoryConfig* c) {
 }
 
 void readImu(YamlSection s, ImuConfig* c) {
+  // The grade first, whatever its place in the file: the explicit keys below override its figures.
+  const int grade = s.choice("grade", imuGradeNames());
+  if (grade >= 0) applyImuGrade(static_cast<ImuGrade>(grade), c);
   s.boolean("enabled", &c->enabled);
   s.number("rate_hz", &c->rate_hz, 1.0, 2000.0, "Hz");
   s.number("gyro_noise_deg_per_sqrt_h", &c->gyro_noise_deg_per_sqrt_h, 0.0, 100.0, "deg/sqrt(h)");
   s.number("gyro_bias_rw_deg_per_h_per_sqrt_h", &c->gyro_bias_rw_deg_per_h_per_sqrt_h, 0.0, 1000.0, "deg/h/sqrt(h)");
   s.number("gyro_initial_bias_deg_per_h", &c->gyro_initial_bias_deg_per_h, 0.0, 10000.0, "deg/h");
+  s.number("gyro_bias_instability_deg_per_h", &c->gyro_bias_instability_deg_per_h, 0.0, 10000.0, "deg/h");
+  s.number("gyro_bias_correlation_time_s", &c->gyro_bias_correlation_time_s, 1.0, 1e6, "s");
+  s.number("gyro_scale_factor_ppm", &c->gyro_scale_factor_ppm, 0.0, 1e5, "ppm");
+  s.number("gyro_misalignment_mrad", &c->gyro_misalignment_mrad, 0.0, 100.0, "mrad");
   s.number("accel_noise_mps_per_sqrt_h", &c->accel_noise_mps_per_sqrt_h, 0.0, 100.0, "m/s/sqrt(h)");
   s.number("accel_bias_rw_mps2_per_sqrt_h", &c->accel_bias_rw_mps2_per_sqrt_h, 0.0, 10.0, "m/s^2/sqrt(h)");
   s.number("accel_initial_bias_mps2", &c->accel_initial_bias_mps2, 0.0, 10.0, "m/s^2");
+  s.number("accel_bias_instability_mps2", &c->accel_bias_instability_mps2, 0.0, 10.0, "m/s^2");
+  s.number("accel_bias_correlation_time_s", &c->accel_bias_correlation_time_s, 1.0, 1e6, "s");
+  s.number("accel_scale_factor_ppm", &c->accel_scale_factor_ppm, 0.0, 1e5, "ppm");
+  s.number("accel_misalignment_mrad", &c->accel_misalignment_mrad, 0.0, 100.0, "mrad");
   s.numbers("mount_rpy_deg", &c->mount_rpy_deg, -kMaxAngle_deg, kMaxAngle_deg, "deg");
+  s.numbers("p_imu_in_robot_m", &c->p_imu_in_robot_m, -kMaxLever_m, kMaxLever_m, "m");
+  s.number("vibration_accel_rms_mps2", &c->vibration_accel_rms_mps2, 0.0, 50.0, "m/s^2");
+  s.number("vibration_gyro_rms_deg_per_s", &c->vibration_gyro_rms_deg_per_s, 0.0, 100.0, "deg/s");
+  s.numbers("vibration_frequencies_hz", &c->vibration_frequencies_hz, 0.1, 10000.0, "Hz");
   s.finish();
 }
 

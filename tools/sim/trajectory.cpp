@@ -139,6 +139,12 @@ KinematicState Trajectory::stateAt(double t_s) const {
   const double sp = std::sin(pitch.v), cp = std::cos(pitch.v);
   s.w_robot_radps = {roll.d1 - sp * yaw.d1, cr * pitch.d1 + sr * cp * yaw.d1,
                      -sr * pitch.d1 + cr * cp * yaw.d1};
+  // Its time derivative (product rule on the line above, with the Euler angles' second derivatives).
+  s.alpha_robot_radps2 = {roll.d2 - cp * pitch.d1 * yaw.d1 - sp * yaw.d2,
+                          -sr * roll.d1 * pitch.d1 + cr * pitch.d2 + cr * roll.d1 * cp * yaw.d1 -
+                              sr * sp * pitch.d1 * yaw.d1 + sr * cp * yaw.d2,
+                          -cr * roll.d1 * pitch.d1 - sr * pitch.d2 - sr * roll.d1 * cp * yaw.d1 -
+                              cr * sp * pitch.d1 * yaw.d1 + cr * cp * yaw.d2};
   const Eigen::Vector3d g_in_odom(0.0, 0.0, -gravity_mps2_);
   s.f_robot_mps2 = s.q_odom_robot.conjugate() * (s.a_robot_in_odom_mps2 - g_in_odom);
   return s;
