@@ -96,6 +96,9 @@ void readImu(YamlSection s, ImuConfig* c) {
 }
 
 void readDvl(YamlSection s, DvlConfig* c) {
+  // The grade's table first, then the explicit keys, which override it wherever they are in the file.
+  const int grade = s.choice("grade", dvlGradeNames());
+  if (grade >= 0) applyDvlGrade(static_cast<DvlGrade>(grade), c);
   s.boolean("enabled", &c->enabled);
   s.number("rate_hz", &c->rate_hz, 0.1, 100.0, "Hz");
   s.numbers("p_dvl_in_robot_m", &c->p_dvl_in_robot_m, -kMaxLever_m, kMaxLever_m, "m");
@@ -107,6 +110,18 @@ void readDvl(YamlSection s, DvlConfig* c) {
   s.number("beam_angle_deg", &c->beam_angle_deg, 5.0, 60.0, "deg");
   s.number("beam_azimuth_offset_deg", &c->beam_azimuth_offset_deg, -kMaxAngle_deg, kMaxAngle_deg, "deg");
   s.number("range_noise_m", &c->range_noise_m, 0.0, 10.0, "m");
+  s.number("beam_noise_fraction", &c->beam_noise_fraction, 0.0, 0.5, "(fraction)");
+  s.number("beam_noise_floor_mps", &c->beam_noise_floor_mps, 0.0, 1.0, "m/s");
+  s.number("scale_factor_percent", &c->scale_factor_percent, -10.0, 10.0, "%");
+  s.number("scale_factor_sigma_percent", &c->scale_factor_sigma_percent, 0.0, 10.0, "%");
+  s.number("bias_sigma_mps", &c->bias_sigma_mps, 0.0, 0.1, "m/s");
+  s.numbers("misalignment_rpy_deg", &c->misalignment_rpy_deg, -30.0, 30.0, "deg");
+  s.boolean("ray_cast", &c->ray_cast);
+  s.number("lock_range_jump_fraction", &c->lock_range_jump_fraction, 0.0, 10.0, "(fraction)");
+  s.number("outlier_probability", &c->outlier_probability, 0.0, 1.0, "(fraction)");
+  s.number("outlier_magnitude_mps", &c->outlier_magnitude_mps, 0.0, 10.0, "m/s");
+  s.number("max_ping_rate_hz", &c->max_ping_rate_hz, 0.0, 100.0, "Hz");
+  s.number("ping_processing_ms", &c->ping_processing_ms, 0.0, 1000.0, "ms");
   s.finish();
 }
 

@@ -47,6 +47,7 @@ bool SensorSimulator::init(const Scenario& scenario, std::uint64_t seed, std::st
   if (!trajectory_.init(scenario.trajectory, scenario.panel, env.odom_origin_depth_m, env.gravity_mps2, error) ||
       !imu_.init(scenario.imu, noiseSeed(seed, SimStream::kImu), error) ||
       !dvl_.init(scenario.dvl, env.seabedZInOdom_m(), noiseSeed(seed, SimStream::kDvl), error) ||
+      (scenario.dvl.ray_cast && !dvl_.attachScene(scenario, seed, error)) ||  // the renderer's scene and seed
       !compass_.init(scenario.compass, scenario.panel, env.seabedZInOdom_m(), noiseSeed(seed, SimStream::kCompass),
                      error) ||
       !depth_.init(scenario.depth, env, noiseSeed(seed, SimStream::kDepth), error) ||
@@ -116,6 +117,10 @@ void SensorSimulator::produce(int channel) {
   const SimStream stream = static_cast<SimStream>(channel);
   const std::uint64_t index = c.next_index++;
   const TimeUs t_us = static_cast<TimeUs>(std::llround(static_cast<double>(index) * 1e6 / c.rate_hz));
+  if (stream == SimStream::kDvl && !dvl_.pingDue(t_us)) {  // still waiting for the last ping's echo
+    ++c.not_pinged;
+    return;
+  }
   const KinematicState truth = trajectory_.stateAt(usToS(t_us));
   // Measure first, even if the sample is then dropped, so faults never shift the noise sequence.
   SimSample sample = measure(stream, truth, t_us, index);

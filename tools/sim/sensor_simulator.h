@@ -46,6 +46,9 @@ class SensorSimulator {
   // Samples emitted and dropped (by the fault schedule) per stream so far.
   std::uint64_t emitted(SimStream s) const { return channels_[static_cast<int>(s)].emitted; }
   std::uint64_t dropped(SimStream s) const { return channels_[static_cast<int>(s)].dropped; }
+  // Channel ticks at which the instrument did not ping (the DVL's altitude-dependent ping rate, dvl.max_ping_rate_hz),
+  // apart from the fault drops.
+  std::uint64_t notPinged(SimStream s) const { return channels_[static_cast<int>(s)].not_pinged; }
 
  private:
   struct Channel {
@@ -54,6 +57,7 @@ class SensorSimulator {
     std::uint64_t next_index = 0;
     std::uint64_t emitted = 0;
     std::uint64_t dropped = 0;
+    std::uint64_t not_pinged = 0;
     NormalRng fault_rng;
     bool has_last = false;
     SimSample last;  // last emitted sample, for "stuck"
