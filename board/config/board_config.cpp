@@ -137,6 +137,10 @@ const std::array kBoardParams = {
     P{"camera.stream_buffers", ParamType::kInt, "buffers", 4, 32, "8", "",
       "driver buffers per camera (Aravis buffers, V4L2 mmap buffers), allocated at start-up",
       DEEPNAV_FIELD(camera.source.stream_buffers)},
+    P{"markers.enabled", ParamType::kBool, "-", 0, 0, "true", "",
+      "the marker chain: detection, panel pose, marker robot poses (false: none of them, the panel is never "
+      "fixed and the run stays in stage 1; with vision.vo_mode=none the dead-reckoning run)",
+      DEEPNAV_FIELD(markers.enabled)},
     P{"markers.panel_file", ParamType::kString, "path", 0, 0, "''", "",
       "panel description (knowledge base), relative to the board file; empty: no markers",
       DEEPNAV_FIELD(markers.panel_file)},

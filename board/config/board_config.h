@@ -64,6 +64,7 @@ struct BoardConfig {
     CameraSourceConfig source;         // the live stereo driver (drivers/camera): camera.driver, left, ...
   } camera;
   struct Markers {
+    bool enabled;               // false: no marker detection, no panel pose, no marker pose fused
     std::string panel_file;     // panel description (knowledge base); empty: no markers
     int panel_min_observations;
     int panel_min_distinct_markers;

@@ -82,7 +82,7 @@ VisionPipelineConfig visionConfig(const VehicleSetup& s) {
   VisionPipelineConfig v;
   v.width_px = s.config.camera.width_px;
   v.height_px = s.config.camera.height_px;
-  v.detect_markers = s.has_panel;
+  v.detect_markers = s.has_panel && s.config.markers.enabled;
   v.markers.dictionary = s.panel.dictionary;
   v.markers.marker_size_m = s.panel.marker_size_m;
   v.markers.camera.fx_px = s.config.camera.fx_px;

@@ -31,7 +31,9 @@ bool NavCore::init(const VehicleSetup& setup, RecordSink* sink, std::string* err
   image_quality_ = -1.0;
   solution_ = NavSolution{};
   poses_.clear();
-  has_panel_ = setup.has_panel;
+  // markers.enabled false: the loop runs as without a panel description (dead reckoning between fixes
+  // of nothing: no panel pose, no marker robot pose, stage 1 throughout).
+  has_panel_ = setup.has_panel && setup.config.markers.enabled;
   feedback_ = NavFeedback{};
   map_ready_ = false;
   workspace_restored_ = false;

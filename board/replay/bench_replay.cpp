@@ -49,8 +49,18 @@ struct BenchRun {
   ReplayTap* tap = nullptr;
 };
 
+// The VO results VoFusion will be offered (it fuses in stage 2 only, the stage of the last tick), per
+// source: VoFusion counts only their total.
+void countVoOffers(BenchRun* run, const InputSample& sample) {
+  const auto* v = std::get_if<VisionResult>(&sample);
+  if (!v || !v->frame_ok || run->core.last().stage != NavStage::kOptimised) return;
+  if (v->vo_orb.valid) ++run->summary->vo_offers.orb;
+  if (v->vo_planes.valid) ++run->summary->vo_offers.planes;
+}
+
 // Every input goes to the loop through the tap when there is one (fault injection on the bench).
 void feed(BenchRun* run, const InputSample& sample) {
+  countVoOffers(run, sample);
   if (run->tap) {
     run->tap->onInput(sample, &run->core);
   } else {
@@ -77,6 +87,9 @@ bool initRun(const ReplayOptions& o, const RecordingReader& reader, BenchRun* ru
   ro.record_images = o.record_images;
   if (!run->writer.open(o.out_dir + "/replay.mcap", ro, error)) return false;
   for (const auto& [name, values] : recordingMetadata(run->setup)) run->writer.recordMetadata(name, values);
+  // The simulator's record (with the true panel pose) travels with the run, so that a replay of the
+  // replay still scores against it.
+  if (const auto* sim = reader.metadata(kTruthPanelMetadata)) run->writer.recordMetadata(kTruthPanelMetadata, *sim);
   if (!run->pending.allocate(static_cast<std::size_t>(c.buffers.vision_results))) {
     if (error) *error = "replay: cannot allocate the vision result queue";
     return false;
@@ -104,6 +117,26 @@ void noteTime(BenchRun* run, TimeUs t_us) {
   run->last_us = std::max(run->last_us, t_us);
 }
 
+// The filter's own pose (the feedback, before the output smoother) at the time of its state, with its
+// covariance, and the board's panel estimate.
+ReplayTick tickRecord(const NavCore& core, const NavSolution& published) {
+  const NavFeedback& f = core.feedback();
+  const Ekf& ekf = core.ekf();
+  ReplayTick r;
+  r.stage = published.stage;
+  r.panel_fixed = f.panel_fixed;
+  r.T_odom_panel = f.T_odom_panel;
+  // While the IMU is stale the solution coasts to the tick (Ekf::coast; the attitude is then not
+  // flagged valid): its pose is the tick's, else the state's, at its last IMU sample.
+  const bool coasting = !(published.status & kStatusAttitudeValid);
+  r.filter_t_s = usToS(coasting ? published.t_us : ekf.state().t_us);
+  r.p_filter_m = f.p_robot_in_odom_m;
+  r.q_filter = f.q_odom_robot;
+  r.P_position_m2 = published.cov_pose.block<3, 3>(0, 0);
+  r.var_yaw_rad2 = published.cov_pose(5, 5);
+  return r;
+}
+
 void tickAt(BenchRun* run, TimeUs t_us) {
   run->scheduler.recordTickStart(t_us, t_us);  // as fast as possible: a tick is never late
   if (run->tap) run->tap->beforeTick(t_us, &run->core);
@@ -116,7 +149,10 @@ void tickAt(BenchRun* run, TimeUs t_us) {
   if ((s.status & kStatusPanelFixed) && run->summary->panel_fixed_at_s < 0) run->summary->panel_fixed_at_s = dive_s;
   if (s.stage == NavStage::kOptimised && run->summary->stage2_at_s < 0) run->summary->stage2_at_s = dive_s;
   // Before alignment the filter has no attitude: those epochs are neither a trajectory nor scored.
-  if (s.stage != NavStage::kInit) run->summary->estimate.push_back({usToS(s.t_us), s.p_robot_in_odom_m, s.q_odom_robot});
+  if (s.stage != NavStage::kInit) {
+    run->summary->estimate.push_back({usToS(s.t_us), s.p_robot_in_odom_m, s.q_odom_robot});
+    run->summary->tick_records.push_back(tickRecord(run->core, s));
+  }
   ++run->summary->ticks;
 }
 
@@ -226,6 +262,29 @@ bool onReproduceEvent(BenchRun* run, const ReplayEvent& e) {
   return true;
 }
 
+ModalityCount modalityCount(std::uint64_t offered, const SourceCounters& c) {
+  ModalityCount m;
+  m.offered = offered;
+  m.fused = c.accepted;
+  m.rejected_gate = c.rejected;
+  m.rejected_other = offered > m.fused + m.rejected_gate ? offered - m.fused - m.rejected_gate : 0;
+  return m;
+}
+
+ModalityCounts modalityCounts(const NavCore& core, const VoOffers& vo) {
+  const Ekf& ekf = core.ekf();
+  const InputCounters& in = core.counters();
+  ModalityCounts m;
+  m.dvl = modalityCount(in.dvl, ekf.health(kSrcDvl).counters);
+  m.compass = modalityCount(in.heading, ekf.health(kSrcHeading).counters);
+  m.depth = modalityCount(in.depth, ekf.health(kSrcDepth).counters);
+  m.attitude = modalityCount(in.attitude, ekf.health(kSrcAttitude).counters);
+  m.markers = modalityCount(core.markers().counters().fused, ekf.health(kSrcMarkers).counters);
+  m.vo_orb = modalityCount(vo.orb, ekf.health(kSrcVoOrb).counters);
+  m.vo_planes = modalityCount(vo.planes, ekf.health(kSrcVoPlanes).counters);
+  return m;
+}
+
 }  // namespace
 
 void computeReplayMetrics(ReplaySummary* s) {
@@ -235,10 +294,9 @@ void computeReplayMetrics(ReplaySummary* s) {
   for (const auto& p : s->estimate) positions.push_back(p.p_robot_in_odom_m);
   s->smoothness = smoothnessMa(positions);
   if (!s->has_truth) return;
-  const AssociatedTrajectories a = associateByTime(s->estimate, s->truth, 0.05);
-  s->errors = trajectoryErrors(a.estimate, a.truth);
+  s->metrics = computeMetrics(s->estimate, s->tick_records, s->truth, s->truth_T_odom_panel);
+  s->errors = s->metrics.odom.whole;
 }
-
 
 bool loadReplaySetup(const std::string& board_path, const RecordingReader& reader, const std::string& recording,
                      VehicleSetup* setup, std::string* error) {
@@ -264,6 +322,11 @@ bool runBenchReplay(const ReplayOptions& o, ReplaySummary* summary, std::string*
   run->tap = o.tap;
   if (!initRun(o, reader, run.get(), error)) return false;
   summary->reproduce = reader.hasSolutions() && !o.rerun;
+  std::string panel_error;
+  summary->truth_T_odom_panel = o.truth_T_odom_panel;
+  if (!o.truth_T_odom_panel) {
+    summary->truth_T_odom_panel = truthPanelFromMetadata(reader.metadata(kTruthPanelMetadata), &panel_error);
+  }
   if (o.progress) {
     std::fprintf(stderr, "replay: %s (%s)\n", o.input_path.c_str(),
                  summary->reproduce ? "recorded run: re-running its ticks and comparing outputs"
@@ -281,8 +344,10 @@ bool runBenchReplay(const ReplayOptions& o, ReplaySummary* summary, std::string*
   summary->panel = run->core.markers().panelEstimator().counters();
   summary->read = reader.stats();
   summary->warnings = reader.warnings();
+  if (!panel_error.empty()) summary->warnings.push_back(panel_error);
   summary->loop = run->scheduler.stats();
   summary->vo = run->core.vo().counters();
+  summary->modalities = modalityCounts(run->core, summary->vo_offers);
   summary->map_frames = run->vision.workspace().frames();
   summary->map_voxels = run->vision.workspace().voxels();
   if (!o.workspace_out.empty() && !summary->reproduce) {

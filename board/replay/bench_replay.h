@@ -1,9 +1,13 @@
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include "board/loop/nav_core.h"
+#include "board/replay/replay_metrics.h"
 #include "board/replay/replay_tap.h"
 #include "drivers/replay/recording_reader.h"
 #include "nav/metrics/smoothness.h"
@@ -25,6 +29,9 @@ struct ReplayOptions {
   std::string workspace_in;      // saved workspace to start from (stage 2 after the panel is found again)
   std::string workspace_out;     // where to save the workspace at the end (empty: not saved)
   ReplayTap* tap = nullptr;      // bench fault injection / observation of every input and tick (not owned)
+  // The true panel pose in the recording's odometry frame for the panel-relative error; nullopt: the
+  // recording's own (replay_metrics.h, kTruthPanelMetadata), if any.
+  std::optional<Eigen::Isometry3d> truth_T_odom_panel;
 };
 
 // One stereo pair as the vision worker handled it (frames.csv; the report's Fig. 5 and Table III(a)).
@@ -64,10 +71,15 @@ struct ReplaySummary {
   LoopStats loop;
   std::vector<std::string> warnings;
   bool has_truth = false;
-  TrajectoryErrors errors;       // estimate vs truth, per tick
+  TrajectoryErrors errors;       // estimate vs truth, per tick (= metrics.odom.whole)
   Smoothness smoothness;
-  std::vector<StampedPose> estimate;
+  std::vector<StampedPose> estimate;  // published pose per tick after alignment of the filter
+  std::vector<ReplayTick> tick_records;  // parallel to estimate: stage, panel estimate, filter pose and covariance
   std::vector<StampedPose> truth;
+  std::optional<Eigen::Isometry3d> truth_T_odom_panel;
+  ReplayMetrics metrics;             // panel-relative error, ATE, RPE, NEES (replay_metrics.h)
+  VoOffers vo_offers;
+  ModalityCounts modalities;
 };
 
 // Replays a recording through the same NavCore as the vehicle, as fast as the machine goes:
@@ -83,10 +95,11 @@ bool runBenchReplay(const ReplayOptions& options, ReplaySummary* summary, std::s
 bool loadReplaySetup(const std::string& board_path, const RecordingReader& reader, const std::string& recording,
                      VehicleSetup* setup, std::string* error);
 
-// Fills errors and smoothness from estimate and truth.
+// Fills errors, smoothness and metrics from estimate, ticks and truth.
 void computeReplayMetrics(ReplaySummary* summary);
 
-// Writes summary.json, trajectory.tum and truth.tum into dir.
+// Writes summary.json, trajectory.tum, truth.tum, nees.csv and, with a panel-relative error,
+// panel_trajectory.tum and panel_truth.tum (T_panel_robot) into dir.
 bool writeReplayOutputs(const std::string& dir, const ReplaySummary& summary, std::string* error);
 
 // The human-readable result table printed by `deepnav replay`.

@@ -66,6 +66,9 @@ bool runRealtimeReplay(const ReplayOptions& o, ReplaySummary* summary, std::stri
         return true;
       },
       error);
+  if (!summary->truth_T_odom_panel) {
+    summary->truth_T_odom_panel = truthPanelFromMetadata(reader.metadata(kTruthPanelMetadata), nullptr);
+  }
   computeReplayMetrics(summary);
   return writeReplayOutputs(o.out_dir, *summary, error);
 }

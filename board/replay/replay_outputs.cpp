@@ -1,3 +1,4 @@
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -65,6 +66,97 @@ std::string jsonString(const std::string& s) {
   return out + "\"";
 }
 
+// A number, or null when it is not finite (JSON has no NaN).
+std::string num(double v) {
+  if (!std::isfinite(v)) return "null";
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.6g", v);
+  return buf;
+}
+
+std::string frameErrorsJson(const TrajectoryErrors& e) {
+  return "{\"position_m\": " + statsJson(e.position, 1.0) + ", \"orientation_deg\": " +
+         statsJson(e.orientation, 180.0 / M_PI) + "}";
+}
+
+// {"whole": {...}, "stage2": {...} or null}
+std::string wholeAndStage2Json(const FrameErrors& f) {
+  return "{\"whole\": " + frameErrorsJson(f.whole) +
+         ", \"stage2\": " + (f.stage2 ? frameErrorsJson(*f.stage2) : std::string("null")) + "}";
+}
+
+std::string ateJson(const AlignedTrajectoryErrors& a) {
+  std::ostringstream o;
+  const Eigen::Matrix3d R = a.T_align.linear();
+  const Eigen::Vector3d t = a.T_align.translation();
+  o << "{\"position_rmse_m\": " << num(a.errors.position.rms) << ", \"rotation_rmse_deg\": "
+    << num(a.errors.orientation.rms * 180.0 / M_PI) << ", \"position_m\": " << statsJson(a.errors.position, 1.0)
+    << ", \"rotation_deg\": " << statsJson(a.errors.orientation, 180.0 / M_PI) << ", \"alignment\": {\"t_m\": ["
+    << num(t.x()) << ", " << num(t.y()) << ", " << num(t.z()) << "], \"angle_deg\": "
+    << num(Eigen::AngleAxisd(R).angle() * 180.0 / M_PI) << "}}";
+  return o.str();
+}
+
+std::string rpeJson(const RelativePoseErrors& r) {
+  std::ostringstream o;
+  o << "{\"delta_m\": " << num(r.delta_m) << ", \"pairs\": " << r.length_m.size()
+    << ", \"translation_rmse_m\": " << num(r.translation.rms) << ", \"rotation_rmse_deg\": "
+    << num(r.rotation.rms * 180.0 / M_PI) << ", \"translation_percent\": " << statsJson(r.translation_percent, 1.0)
+    << ", \"rotation_deg_per_m\": " << statsJson(r.rotation_rad_per_m, 180.0 / M_PI) << "}";
+  return o.str();
+}
+
+std::string neesJson(const NeesSummary& n) {
+  std::ostringstream o;
+  o << "{\"dof\": " << n.dof << ", \"count\": " << n.count << ", \"mean\": " << num(n.mean)
+    << ", \"median\": " << num(n.median) << ", \"band\": [" << num(n.band.lo) << ", " << num(n.band.hi)
+    << "], \"mean_band\": [" << num(n.mean_band.lo) << ", " << num(n.mean_band.hi)
+    << "], \"in_band_fraction\": " << num(n.in_band_fraction) << ", \"above_fraction\": "
+    << num(n.above_fraction) << ", \"below_fraction\": " << num(n.below_fraction) << "}";
+  return o.str();
+}
+
+std::string modalityJson(const ModalityCount& m) {
+  std::ostringstream o;
+  o << "{\"offered\": " << m.offered << ", \"fused\": " << m.fused << ", \"rejected_gate\": " << m.rejected_gate
+    << ", \"rejected_other\": " << m.rejected_other << "}";
+  return o.str();
+}
+
+std::string modalitiesJson(const ModalityCounts& m) {
+  return "{\"dvl\": " + modalityJson(m.dvl) + ", \"compass\": " + modalityJson(m.compass) +
+         ", \"depth\": " + modalityJson(m.depth) + ", \"attitude\": " + modalityJson(m.attitude) +
+         ", \"markers\": " + modalityJson(m.markers) + ", \"vo_orb\": " + modalityJson(m.vo_orb) +
+         ", \"vo_planes\": " + modalityJson(m.vo_planes) + "}";
+}
+
+void writeMetricsJson(std::ostream& out, const ReplaySummary& s) {
+  const ReplayMetrics& m = s.metrics;
+  out << "  \"truth_panel\": " << (s.truth_T_odom_panel ? "true" : "false") << ",\n";
+  out << "  \"odom_error\": " << wholeAndStage2Json(m.odom) << ",\n";
+  out << "  \"panel_error\": " << (m.panel ? wholeAndStage2Json(*m.panel) : std::string("null")) << ",\n";
+  if (!m.panel) out << "  \"panel_error_absent\": " << jsonString(m.panel_absent_reason) << ",\n";
+  out << "  \"ate\": " << ateJson(m.ate) << ",\n";
+  out << "  \"rpe\": " << rpeJson(m.rpe) << ",\n";
+  out << "  \"nees\": {\"position\": " << neesJson(m.nees_position_summary)
+      << ", \"heading\": " << neesJson(m.nees_heading_summary) << "},\n";
+}
+
+bool writeNees(const std::string& path, const ReplayMetrics& m, std::string* error) {
+  std::ofstream out(path);
+  out << "t_s,nees_position,nees_heading\n";
+  char line[128];
+  for (std::size_t k = 0; k < m.nees_t_s.size(); ++k) {
+    std::snprintf(line, sizeof line, "%.6f,%.6g,%.6g\n", m.nees_t_s[k], m.nees_position[k], m.nees_heading[k]);
+    out << line;
+  }
+  if (!out.flush()) {
+    if (error) *error = path + ": cannot write";
+    return false;
+  }
+  return true;
+}
+
 bool writeFrameStats(const std::string& path, const std::vector<FrameStat>& frames, std::string* error) {
   std::ofstream out(path);
   out << "t_s,stage,image_quality,selected,orb_vo,planes_vo,orb_tracked,planes,markers,face,orb_us,planes_us,map_us,"
@@ -83,12 +175,50 @@ bool writeFrameStats(const std::string& path, const std::vector<FrameStat>& fram
   return true;
 }
 
+// The panel-relative error, ATE, RPE and NEES lines under the error table.
+std::string formatMetrics(const ReplayMetrics& m) {
+  std::ostringstream o;
+  char line[256];
+  const double deg = 180.0 / M_PI;
+  if (m.panel) {
+    const auto& p = m.panel->whole;
+    std::snprintf(line, sizeof line, "| panel-relative position (m) | %.3f | %.3f | %.3f | %.3f |\n", p.position.mean,
+                  p.position.std, p.position.rms, p.position.max);
+    o << line;
+    std::snprintf(line, sizeof line, "| panel-relative orientation (deg) | %.2f | %.2f | %.2f | %.2f |\n",
+                  p.orientation.mean * deg, p.orientation.std * deg, p.orientation.rms * deg, p.orientation.max * deg);
+    o << line;
+  } else {
+    o << "panel-relative error: none (" << m.panel_absent_reason << ")\n";
+  }
+  std::snprintf(line, sizeof line,
+                "ATE after SE(3) alignment: %.3f m, %.2f deg (rmse); RPE per %.0f m: %.2f %% of distance, %.3f deg/m "
+                "(%zu segments)\n",
+                m.ate.errors.position.rms, m.ate.errors.orientation.rms * deg, m.rpe.delta_m,
+                m.rpe.translation_percent.mean, m.rpe.rotation_rad_per_m.mean * deg, m.rpe.length_m.size());
+  o << line;
+  const NeesSummary& np = m.nees_position_summary;
+  const NeesSummary& nh = m.nees_heading_summary;
+  std::snprintf(line, sizeof line,
+                "NEES position: mean %.2f (band of the mean [%.2f, %.2f]), %.0f %% of ticks in [%.2f, %.2f]; heading: "
+                "mean %.2f, %.0f %% in [%.4f, %.2f]\n",
+                np.mean, np.mean_band.lo, np.mean_band.hi, 100.0 * np.in_band_fraction, np.band.lo, np.band.hi,
+                nh.mean, 100.0 * nh.in_band_fraction, nh.band.lo, nh.band.hi);
+  o << line;
+  return o.str();
+}
+
 }  // namespace
 
 bool writeReplayOutputs(const std::string& dir, const ReplaySummary& s, std::string* error) {
   if (!writeTum(dir + "/trajectory.tum", s.estimate, error)) return false;
   if (!s.frame_stats.empty() && !writeFrameStats(dir + "/frames.csv", s.frame_stats, error)) return false;
   if (s.has_truth && !writeTum(dir + "/truth.tum", s.truth, error)) return false;
+  if (s.has_truth && !writeNees(dir + "/nees.csv", s.metrics, error)) return false;
+  if (s.metrics.panel && (!writeTum(dir + "/panel_trajectory.tum", s.metrics.panel_estimate, error) ||
+                          !writeTum(dir + "/panel_truth.tum", s.metrics.panel_truth, error))) {
+    return false;
+  }
   std::ofstream out(dir + "/summary.json");
   if (!out) {
     if (error) *error = dir + "/summary.json: cannot write";
@@ -107,6 +237,7 @@ bool writeReplayOutputs(const std::string& dir, const ReplaySummary& s, std::str
   out << "  \"stage2_at_s\": " << s.stage2_at_s << ",\n";
   out << "  \"workspace\": {\"restored\": " << (s.workspace_restored ? "true" : "false")
       << ", \"map_frames\": " << s.map_frames << ", \"map_voxels\": " << s.map_voxels << "},\n";
+  out << "  \"modalities\": " << modalitiesJson(s.modalities) << ",\n";
   out << "  \"vo\": {\"offered\": " << s.vo.measurements << ", \"accepted\": " << s.vo.accepted
       << ", \"rejected\": " << s.vo.rejected << ", \"no_clone\": " << s.vo.no_clone << ", \"accepted_orb\": "
       << s.vo.accepted_by_source[1] << ", \"accepted_planes\": " << s.vo.accepted_by_source[2] << "},\n";
@@ -118,6 +249,7 @@ bool writeReplayOutputs(const std::string& dir, const ReplaySummary& s, std::str
   if (s.has_truth) {
     out << "  \"position_error_m\": " << statsJson(s.errors.position, 1.0) << ",\n";
     out << "  \"orientation_error_deg\": " << statsJson(s.errors.orientation, 180.0 / M_PI) << ",\n";
+    writeMetricsJson(out, s);
   }
   out << "  \"warnings\": [";
   for (std::size_t i = 0; i < s.warnings.size(); ++i) out << (i ? ", " : "") << jsonString(s.warnings[i]);
@@ -173,6 +305,7 @@ std::string formatReplaySummary(const ReplaySummary& s) {
     std::snprintf(line, sizeof line, "| orientation error (deg) | %.2f | %.2f | %.2f | %.2f |\n", q.mean * deg,
                   q.std * deg, q.rms * deg, q.max * deg);
     o << line;
+    o << formatMetrics(s.metrics);
   }
   std::snprintf(line, sizeof line, "smoothness m_A = %.4f\n\n", s.smoothness.m_a);
   o << line;

@@ -1,6 +1,9 @@
 // End-to-end bench replay: simulator -> recording -> loop -> recording -> loop, bit for bit.
 #include <filesystem>
 #include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -80,6 +83,59 @@ TEST_F(ReplayTest, RecordingCutOffMidWriteReplaysUpToItsLastCompleteChunk) {
   EXPECT_FALSE(s.warnings.empty());
   EXPECT_GT(s.dive_s, 15.0 * 0.6 - 2.5);
   EXPECT_LT(s.dive_s, 15.0 * 0.6 + 0.5);
+}
+
+ReplaySummary replayWith(const std::string& input, const std::string& out, const std::vector<std::string>& overrides) {
+  ReplayOptions o;
+  o.input_path = input;
+  o.out_dir = out;
+  o.progress = false;
+  o.overrides = overrides;
+  ReplaySummary s;
+  std::string error;
+  EXPECT_TRUE(runBenchReplay(o, &s, &error)) << error;
+  return s;
+}
+
+std::string readText(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+TEST_F(ReplayTest, DeadReckoningRunUsesTheNavigationSensorsOnly) {
+  // GIVEN the 15 s dive WHEN replayed as the dead-reckoning run (no VO, no markers)
+  const std::string out = ::testing::TempDir() + "replay_dr";
+  const ReplaySummary s = replayWith(dive_, out, {"vision.vo_mode=none", "markers.enabled=false"});
+  // THEN it ticks through the whole dive in stage 1, every pair still goes through the vision worker, no
+  // marker pose is fused and no panel is ever fixed (that the worker then detects no marker is
+  // board_config_test's MarkersEnabledKeySwitchesTheWholeMarkerChain: this dive's first 15 s show none)
+  EXPECT_NEAR(static_cast<double>(s.ticks), 1500.0, 2.0);
+  EXPECT_EQ(s.frames, 151u);
+  EXPECT_EQ(s.markers.observations, 0u);
+  EXPECT_EQ(s.modalities.markers.offered, 0u);
+  EXPECT_LT(s.panel_fixed_at_s, 0.0);
+  EXPECT_LT(s.stage2_at_s, 0.0);
+  EXPECT_EQ(s.modalities.vo_orb.offered + s.modalities.vo_planes.offered, 0u);
+  // AND the navigation sensors are offered and fused
+  EXPECT_EQ(s.modalities.dvl.offered, s.inputs.dvl);
+  EXPECT_GT(s.modalities.dvl.fused, s.modalities.dvl.offered / 2);
+  EXPECT_GT(s.modalities.depth.fused, 0u);
+  EXPECT_GT(s.modalities.compass.fused, 0u);
+  // AND it is scored: odom error, ATE, NEES per tick; the panel-relative error is absent (null), not 0
+  ASSERT_TRUE(s.has_truth);
+  EXPECT_GT(s.metrics.odom.whole.position.count, 1000u);
+  EXPECT_FALSE(s.metrics.odom.stage2);
+  EXPECT_FALSE(s.metrics.panel);
+  EXPECT_GT(s.metrics.nees_position_summary.count, 1000u);
+  EXPECT_GT(s.metrics.nees_heading_summary.count, 1000u);
+  const std::string json = readText(out + "/summary.json");
+  EXPECT_NE(json.find("\"panel_error\": null"), std::string::npos);
+  EXPECT_NE(json.find("\"panel_error_absent\": \"the board never fixed the panel\""), std::string::npos);
+  EXPECT_NE(json.find("\"nees\": {\"position\": {\"dof\": 3"), std::string::npos);
+  EXPECT_TRUE(std::filesystem::exists(out + "/nees.csv"));
+  EXPECT_TRUE(std::filesystem::exists(out + "/truth.tum"));
 }
 
 TEST(Replay, MissingOrGarbageFileGivesAClearError) {

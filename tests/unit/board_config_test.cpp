@@ -109,3 +109,40 @@ TEST(BoardConfig, MountingRotationsLeverArmsAndDurations) {
 
 }  // namespace
 }  // namespace deepnav
+
+#include "board/config/board_overrides.h"
+#include "board/config/vehicle_setup.h"
+#include "board/loop/nav_core.h"
+
+namespace deepnav {
+namespace {
+
+TEST(BoardConfig, MarkersEnabledKeySwitchesTheWholeMarkerChain) {
+  // GIVEN the simulator's board (it names a panel) WHEN loaded as is THEN markers are on: detected by
+  // the vision worker and used by the loop
+  VehicleSetup setup;
+  std::string error;
+  const std::string board = std::string(DEEPNAV_SOURCE_DIR) + "/board/sim/board.yaml";
+  ASSERT_TRUE(loadVehicleSetup(board, &setup, &error)) << error;
+  EXPECT_TRUE(setup.config.markers.enabled);
+  EXPECT_TRUE(visionConfig(setup).detect_markers);
+  NavCore on;
+  ASSERT_TRUE(on.init(setup, nullptr, &error)) << error;
+  EXPECT_TRUE(on.hasPanel());
+  // WHEN overridden as the dead-reckoning run does THEN neither detects nor uses markers
+  ASSERT_TRUE(applyBoardOverrides({"markers.enabled=false", "vision.vo_mode=none"}, &setup, &error)) << error;
+  EXPECT_FALSE(setup.config.markers.enabled);
+  EXPECT_TRUE(setup.has_panel);  // the description is still known (the recording keeps it)
+  EXPECT_FALSE(visionConfig(setup).detect_markers);
+  NavCore off;
+  ASSERT_TRUE(off.init(setup, nullptr, &error)) << error;
+  EXPECT_FALSE(off.hasPanel());
+  // AND a bad value names the key
+  EXPECT_FALSE(applyBoardOverrides({"markers.enabled=sometimes"}, &setup, &error));
+  EXPECT_NE(error.find("markers.enabled"), std::string::npos) << error;
+  // AND `deepnav config --list` documents it
+  EXPECT_NE(describeBoardParams().find("`markers.enabled` | bool | - | `true` | true or false"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace deepnav

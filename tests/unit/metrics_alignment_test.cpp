@@ -137,7 +137,9 @@ TEST(MetricsRpe, InvariantToARigidTransformOfTheEstimate) {
 TEST(MetricsRpe, StandingStillGivesNoSegment) {
   // A robot that does not travel a metre has no segment (not a zero error)
   std::vector<StampedPose> still;
-  for (int k = 0; k < 100; ++k) still.push_back(pose(0.01 * k, Eigen::Vector3d(0, 0, 0.001 * k), Eigen::Quaterniond::Identity()));
+  for (int k = 0; k < 100; ++k) {
+    still.push_back(pose(0.01 * k, Eigen::Vector3d(0, 0, 0.001 * k), Eigen::Quaterniond::Identity()));
+  }
   EXPECT_TRUE(relativePoseErrors(still, still, 1.0).length_m.empty());
 }
 

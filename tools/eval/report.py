@@ -4,6 +4,8 @@ and writes report/index.html with matplotlib figures in the style of the DexROV 
   Fig. 6  top view of the trajectory, each pose's position error as colour and circle size;
   Fig. 5  orientation error over time per VO setting, marker-less intervals and panel-side changes
           marked, and the image-quality curve m_I with the modality threshold under it;
+  the error in the odometry frame beside the panel-relative one (T_panel_robot), and the NEES of
+          position and heading per tick with the 95 % chi-square band (nees.csv);
   one stereo pair with its disparity, the filtered cloud with its planes, the stage-1 octomap;
   the paper's tables (from tools/eval/paper_tables.py)."""
 import argparse
@@ -123,6 +125,55 @@ def fig5(path, runs, frames, threshold, t0):
     plt.close(fig)
 
 
+def nees_plot(path, run, summary, t0):
+    """NEES of position (3 dof) and heading (1 dof) per tick against the filter's covariance, with the 95 %
+    chi-square band per tick and the band of the mean over the run."""
+    data = np.loadtxt(os.path.join(run, "nees.csv"), delimiter=",", skiprows=1, ndmin=2)
+    if data.size == 0:
+        return False
+    fig, axes = plt.subplots(2, 1, figsize=(9, 6), sharex=True)
+    for ax, column, key, title in ((axes[0], 1, "position", "position NEES (3 dof)"),
+                                   (axes[1], 2, "heading", "heading NEES (1 dof)")):
+        n = summary.get("nees", {}).get(key, {})
+        values = np.maximum(data[:, column], 1e-6)
+        ax.semilogy(data[:, 0] - t0, values, lw=0.6, color="tab:blue", label="NEES per tick")
+        if n.get("band"):
+            lo, hi = n["band"]
+            ax.axhspan(max(lo, 1e-6), hi, color="tab:green", alpha=0.15,
+                       label=f"95 % band per tick [{lo:.3g}, {hi:.3g}]")
+        if n.get("mean") is not None:
+            lo, hi = n["mean_band"]
+            ax.axhline(n["mean"], color="tab:red", lw=1,
+                       label=f"mean {n['mean']:.3g} (band of the mean {lo:.3g}-{hi:.3g}); "
+                             f"{100 * n['in_band_fraction']:.0f} % of ticks in band")
+        ax.axhline(n.get("dof", 1), color="k", ls=":", lw=0.8)
+        ax.set_ylabel(title)
+        ax.legend(fontsize=7, loc="upper left")
+    axes[0].set_title("Filter consistency: NEES against its own covariance (dotted: the dof, expected mean)")
+    axes[1].set_xlabel("dive time (s)")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return True
+
+
+def accuracy_rows(summary):
+    """(name, stats or None) rows: odometry-frame error beside the panel-relative one, aligned ATE."""
+    panel = summary.get("panel_error") or {}
+    whole = panel.get("whole") or {}
+    stage2 = panel.get("stage2") or {}
+    odom2 = (summary.get("odom_error") or {}).get("stage2") or {}
+    ate = summary.get("ate") or {}
+    return [("odometry frame: position error (m)", summary.get("position_error_m")),
+            ("panel-relative: position error (m)", whole.get("position_m")),
+            ("odometry frame: orientation error (deg)", summary.get("orientation_error_deg")),
+            ("panel-relative: orientation error (deg)", whole.get("orientation_deg")),
+            ("stage 2, odometry frame: position error (m)", odom2.get("position_m")),
+            ("stage 2, panel-relative: position error (m)", stage2.get("position_m")),
+            ("after SE(3) alignment (ATE): position error (m)", ate.get("position_m")),
+            ("after SE(3) alignment (ATE): orientation error (deg)", ate.get("rotation_deg"))]
+
+
 def scatter3d(path, csv_path, title, colour_column=None, max_points=20000):
     data = np.loadtxt(csv_path, delimiter=",", skiprows=1, ndmin=2)
     if data.size == 0:
@@ -190,8 +241,10 @@ def main():
             runs[name] = path
         fig5(os.path.join(args.out, "fig5.png"), runs, frames, args.threshold, t[0])
         figures += ["top_view.png", "fig5.png"]
-        rows.append(("position error (m)", summary["position_error_m"]))
-        rows.append(("orientation error (deg)", summary["orientation_error_deg"]))
+        rows = accuracy_rows(summary)
+        if os.path.exists(os.path.join(args.run, "nees.csv")) and nees_plot(
+                os.path.join(args.out, "nees.png"), args.run, summary, t[0]):
+            figures.append("nees.png")
     if args.figures and os.path.isdir(args.figures):
         for name in ("left.png", "disparity.png", "planes.png"):
             src = os.path.join(args.figures, name)
@@ -208,7 +261,10 @@ def main():
             figures.append("octomap.png")
     table = "".join(
         f"<tr><td>{html.escape(name)}</td><td>{s['mean']:.3f}</td><td>{s['std']:.3f}</td>"
-        f"<td>{s['rms']:.3f}</td><td>{s['max']:.3f}</td></tr>" for name, s in rows)
+        f"<td>{s['rms']:.3f}</td><td>{s['max']:.3f}</td></tr>" if s else
+        f"<tr><td>{html.escape(name)}</td><td colspan=4>n/a</td></tr>" for name, s in rows)
+    if summary.get("panel_error") is None and summary.get("panel_error_absent"):
+        table += f"<tr><td colspan=5>panel-relative: {html.escape(summary['panel_error_absent'])}</td></tr>"
     loop = summary["loop"]
     tasks = "".join(
         f"<tr><td>{html.escape(tk['name'])}</td><td>{tk['runs']}</td><td>{tk['overruns']}</td>"
