@@ -1,7 +1,9 @@
 #include "tools/sim/dive_recorder.h"
 
 #include <cstdio>
+#include <map>
 #include <memory>
+#include <string>
 
 #include "board/config/panel_file.h"
 #include "board/config/recording_options.h"
@@ -41,7 +43,8 @@ struct FrameRecorder {
   bool enabled = false;
   std::uint64_t seed = 0;
 
-  bool init(const Scenario& scenario, std::uint64_t sim_seed, const BoardConfig& board, bool render, std::string* error) {
+  bool init(const Scenario& scenario, std::uint64_t sim_seed, const BoardConfig& board, bool render, bool maps,
+            std::string* error) {
     seed = sim_seed;
     enabled = render && scenario.camera.enabled;
     if (!enabled) return true;
@@ -52,6 +55,7 @@ struct FrameRecorder {
     if (!renderer.init(scenario, seed, board.camera.channels, error)) return false;
     renderer.useSecondThread();  // the right view on the second core: same recording, about half the time
     renderer.allocateTruth(&render_truth);
+    if (!maps) return true;  // empty maps: the writer records poses and marker ids only
     truth.depth_m = render_truth.depth_m;  // shares the pixels: the renderer fills them
     truth.disparity_px = render_truth.disparity_px;
     return true;
@@ -97,6 +101,25 @@ void recordEvent(const SimEvent& e, const SensorSimulator& sim, const Eigen::Vec
   }
 }
 
+// The run's identity and the true panel pose in the recorded odometry frame (T_odom_panel: footprint
+// centre on the seabed, x along the front face's outward normal, z up; makePanelDescription's frame), so
+// that an evaluation can score the robot relative to the panel.
+std::map<std::string, std::string> simMetadata(const DiveRecordOptions& o, const Scenario& scenario,
+                                               const Eigen::Vector3d& scene_to_odom_m) {
+  const Eigen::Vector3d p_panel_in_odom_m =
+      Eigen::Vector3d(scenario.panel.centre_in_odom_m[0], scenario.panel.centre_in_odom_m[1],
+                      scenario.environment.seabedZInOdom_m()) - scene_to_odom_m;
+  char position[128];
+  std::snprintf(position, sizeof(position), "%.9g %.9g %.9g", p_panel_in_odom_m.x(), p_panel_in_odom_m.y(),
+                p_panel_in_odom_m.z());
+  char yaw[64];
+  std::snprintf(yaw, sizeof(yaw), "%.9g", scenario.panel.front_yaw_deg);
+  return {{"scenario", o.scenario_path},
+          {"seed", std::to_string(o.seed)},
+          {"p_panel_in_odom_m", position},
+          {"yaw_odom_panel_deg", yaw}};
+}
+
 }  // namespace
 
 bool recordDive(const DiveRecordOptions& o, DiveRecordSummary* summary, std::string* error) {
@@ -113,14 +136,14 @@ bool recordDive(const DiveRecordOptions& o, DiveRecordSummary* summary, std::str
   SensorSimulator sim;
   if (!sim.init(scenario, o.seed, error)) return false;
   auto frames = std::make_unique<FrameRecorder>();
-  if (!frames->init(scenario, o.seed, setup.config, o.render, error)) return false;
+  if (!frames->init(scenario, o.seed, setup.config, o.render, o.truth_maps, error)) return false;
   RecordingWriter writer;
   RecordingOptions recording = recordingOptions(setup.config);
-  recording.truth_maps = frames->enabled;
+  recording.truth_maps = frames->enabled && o.truth_maps;
   if (!writer.open(o.out_path, recording, error)) return false;
   for (const auto& [name, values] : recordingMetadata(setup)) writer.recordMetadata(name, values);
-  writer.recordMetadata("deepnav.sim", {{"scenario", o.scenario_path}, {"seed", std::to_string(o.seed)}});
   const Eigen::Vector3d scene_to_odom_m = sceneToOdomOffset(sim);
+  writer.recordMetadata("deepnav.sim", simMetadata(o, scenario, scene_to_odom_m));
   SimEvent e;
   TimeUs next_report_us = 0;
   while (sim.next(&e)) {

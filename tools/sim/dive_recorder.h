@@ -13,6 +13,8 @@ struct DiveRecordOptions {
   std::uint64_t seed = 1;
   bool progress = true;
   bool render = true;       // render the stereo pairs (false: navigation sensors only, much faster)
+  bool truth_maps = true;   // record each pair's true depth and disparity maps (false: poses and marker ids
+                            // only; a 7-minute dive then takes about half the disk)
 };
 
 struct DiveRecordSummary {

@@ -15,6 +15,8 @@ int main(int argc, char** argv) {
   app.add_option("--out", o.out_path, "output recording (.mcap)");
   app.add_option("--write-panel", panel_out, "write the scenario's panel description (knowledge base) and exit");
   app.add_flag("!--no-images", o.render, "navigation sensors only: no stereo rendering");
+  app.add_flag("!--no-truth-maps", o.truth_maps,
+               "leave the per-pair true depth and disparity maps out (poses and marker ids stay): smaller files");
   app.add_option("--seed", o.seed, "random seed (same seed, same recording)");
   app.add_option("--board", o.board_path, "board of the simulated vehicle, stored in the recording")
       ->default_val(std::string(DEEPNAV_SOURCE_DIR) + "/board/sim/board.yaml")

@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "tools/sim/jet2.h"
 #include "tools/sim/rotation.h"
@@ -60,14 +61,32 @@ bool Trajectory::init(const TrajectoryConfig& config, const PanelGeometry& panel
   if (!(config.disturbance_period_s > 0.0)) return fail(error, "disturbance_period_s must be > 0");
   if (!(panel.half_width_m > panel.corner_radius_m && panel.corner_radius_m >= 0.0))
     return fail(error, "panel half_width_m must exceed corner_radius_m >= 0");
+  if (!checkPlan(error)) return false;
+  plan_.init(config.plan, panel);
+  return true;
+}
+
+bool Trajectory::checkPlan(std::string* error) const {
+  for (std::size_t i = 0; i < config_.plan.size(); ++i) {
+    const PlanWaypoint& w = config_.plan[i];
+    const std::string name = "plan[" + std::to_string(i) + "]";
+    if (i > 0 && !(w.move_s > 0.0)) return fail(error, name + ".move_s must be > 0");
+    if (!(w.hold_s >= 0.0)) return fail(error, name + ".hold_s must be >= 0");
+    if (!(w.standoff_m > 0.0)) return fail(error, name + ".standoff_m must be > 0");
+  }
   return true;
 }
 
 double Trajectory::planDuration_s() const {
+  if (!config_.plan.empty()) return plan_.duration_s();
   return config_.start_hold_s + config_.approach_s + 3.0 * config_.dwell_s + 2.0 * config_.traverse_s;
 }
 
 Trajectory::PlanarPose Trajectory::nominalInPanel(const Jet2& t) const {
+  if (!config_.plan.empty()) {
+    const PlanPose scripted = plan_.poseAt(t);
+    return {scripted.x, scripted.y, scripted.depth, scripted.yaw};
+  }
   const TrajectoryConfig& c = config_;
   const double t_approach = c.start_hold_s;
   const double t_traverse1 = t_approach + c.approach_s + c.dwell_s;

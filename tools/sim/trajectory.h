@@ -4,6 +4,7 @@
 #include "tools/sim/kinematic_state.h"
 #include "tools/sim/panel_geometry.h"
 #include "tools/sim/trajectory_config.h"
+#include "tools/sim/trajectory_plan.h"
 
 namespace deepnav::sim {
 
@@ -28,7 +29,8 @@ class Trajectory {
   // plan holds its end state (plus disturbances) after the last dwell.
   KinematicState stateAt(double t_s) const;
 
-  // Duration of the plan (hold + approach + 3 dwells + 2 traverses).
+  // Duration of the plan (built-in: hold + approach + 3 dwells + 2 traverses; scripted: its holds and
+  // moves).
   double planDuration_s() const;
 
   const TrajectoryConfig& config() const { return config_; }
@@ -38,7 +40,10 @@ class Trajectory {
   struct PlanarPose;
   PlanarPose nominalInPanel(const Jet2& t) const;
 
+  bool checkPlan(std::string* error) const;
+
   TrajectoryConfig config_;
+  TrajectoryPlan plan_;
   PanelGeometry panel_;
   double odom_origin_depth_m_ = 0.0;
   double gravity_mps2_ = 9.80665;

@@ -1,4 +1,7 @@
 #pragma once
+#include <vector>
+
+#include "tools/sim/trajectory_plan.h"
 
 namespace deepnav::sim {
 
@@ -23,6 +26,9 @@ struct TrajectoryConfig {
   double pitch_amplitude_deg = 1.5;
   double yaw_amplitude_deg = 1.0;
   double disturbance_period_s = 9.0;  // period of the slowest disturbance sinusoid
+  // A scripted dive instead of the built-in plan above (its standoff, start, depths and durations are
+  // then unused; the disturbances still apply). Empty: the built-in plan.
+  std::vector<PlanWaypoint> plan;
 
   bool operator==(const TrajectoryConfig&) const = default;
 };
