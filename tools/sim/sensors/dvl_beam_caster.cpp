@@ -33,7 +33,6 @@ bool DvlBeamCaster::cast(const Eigen::Vector3d& p_in_odom_m, const Eigen::Vector
   if (!scene_.intersect(o, d, kMinRange_m, static_cast<float>(max_range_m), &hit)) return false;
   echo->range_m = hit.t;
   echo->fish = hit.primitive >= first_fish_;
-  echo->structure = hit.primitive != Scene::kSeabed && !echo->fish;
   echo->v_target_in_odom_mps =
       echo->fish ? fishVelocityInOdom_mps(hit.primitive - first_fish_, t_s) : Eigen::Vector3d::Zero();
   return true;

@@ -15,7 +15,6 @@ namespace deepnav::sim {
 struct DvlEcho {
   double range_m = 0.0;                                        // slant range to the first surface
   Eigen::Vector3d v_target_in_odom_mps = Eigen::Vector3d::Zero();  // its velocity (a fish moves)
-  bool structure = false;                                      // the panel, its fixtures or base
   bool fish = false;
 };
 
