@@ -17,6 +17,11 @@ struct CameraTick {
   Eigen::Quaterniond q_odom_left_cam = Eigen::Quaterniond::Identity();
   Eigen::Vector3d p_right_cam_in_odom_m = Eigen::Vector3d::Zero();
   Eigen::Quaterniond q_odom_right_cam = Eigen::Quaterniond::Identity();
+  // The rig's motion at the instant, each in the camera's own optical frame: the velocity of each optical
+  // centre and the angular rate (motion blur, tools/sim/render/motion_blur.h). Zero for a still view.
+  Eigen::Vector3d v_left_cam_mps = Eigen::Vector3d::Zero();
+  Eigen::Vector3d v_right_cam_mps = Eigen::Vector3d::Zero();
+  Eigen::Vector3d w_cam_radps = Eigen::Vector3d::Zero();
   bool corrupted = false;  // `garbage` fault: the recorded images are noise (tools/sim/faults/frame_corruption.h)
 };
 

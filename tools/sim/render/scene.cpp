@@ -14,6 +14,8 @@ namespace deepnav::sim {
 namespace {
 const Eigen::Vector3f kBackAlbedo(0.12f, 0.12f, 0.13f);  // unpainted inside of the panel
 const Eigen::Vector3f kFishAlbedo(0.30f, 0.30f, 0.28f);  // grey-silver
+const Eigen::Vector3f kArmLinkAlbedo(0.30f, 0.32f, 0.34f);   // the manipulator's anodised links (BGR)
+const Eigen::Vector3f kArmJointAlbedo(0.10f, 0.10f, 0.11f);  // its dark joints and gripper
 }  // namespace
 
 bool Scene::init(const Scenario& scenario, const PanelDescription& panel, double quiet_zone_m, std::uint64_t seed,
@@ -29,6 +31,7 @@ bool Scene::init(const Scenario& scenario, const PanelDescription& panel, double
   }
   if (!buildPanel(scenario, panel, quiet_zone_m, seed32, error)) return false;
   addFish(scenario, seed);
+  addArm(scenario);
   return true;
 }
 
@@ -116,6 +119,34 @@ void Scene::setTime(double t_s) {
     fish_.poseAt(i, t_s, &R, &p);
     placePrimitive(R, p, &primitives_[first_fish_ + i]);
   }
+}
+
+void Scene::addArm(const Scenario& scenario) {
+  arm_.init(scenario.camera.arm);
+  first_arm_ = static_cast<int>(primitives_.size());
+  if (!arm_.enabled()) return;
+  const int first_material = static_cast<int>(materials_.size());
+  Material links, joints;
+  links.albedo_bgr = kArmLinkAlbedo;
+  joints.albedo_bgr = kArmJointAlbedo;
+  materials_.push_back(links);
+  materials_.push_back(joints);
+  ManipulatorArm::Parts parts;
+  arm_.partsAt(0.0, &parts);
+  for (ManipulatorArm::Part& part : parts) {
+    part.shape.material += first_material;
+    primitives_.push_back(part.shape);
+  }
+  placeArm(Eigen::Matrix3f::Identity(), Eigen::Vector3f(0.0f, 0.0f, -100.0f), 0.0);
+}
+
+void Scene::placeArm(const Eigen::Matrix3f& R_panel_robot, const Eigen::Vector3f& p_robot_in_panel_m, double t_s) {
+  if (!arm_.enabled()) return;
+  ManipulatorArm::Parts parts;
+  arm_.partsAt(t_s, &parts);
+  for (int i = 0; i < ManipulatorArm::kParts; ++i)
+    placePrimitive(R_panel_robot * parts[i].R_robot_part, p_robot_in_panel_m + R_panel_robot * parts[i].p_part_in_robot_m,
+                   &primitives_[first_arm_ + i]);
 }
 
 bool Scene::intersect(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float t_min, float t_max,

@@ -9,6 +9,7 @@
 
 #include "nav/markers/panel_description.h"
 #include "tools/sim/render/fish_school.h"
+#include "tools/sim/render/manipulator_arm.h"
 #include "tools/sim/render/material.h"
 #include "tools/sim/render/primitive.h"
 #include "tools/sim/render/ray_primitives.h"
@@ -36,8 +37,12 @@ class Scene {
   // quiet_zone_m: the white margin painted around each marker (MarkerLayout::quiet_zone_m).
   bool init(const Scenario& scenario, const PanelDescription& panel, double quiet_zone_m, std::uint64_t seed,
             std::string* error);
-  // Moves the fish to time t (the only moving part).
+  // Moves the fish to time t.
   void setTime(double t_s);
+  // Poses the manipulator arm (camera.arm, manipulator_arm.h; its primitives follow the fish) at time t
+  // on the robot at R_panel_robot, p_robot_in_panel_m. Nothing without camera.arm.
+  void placeArm(const Eigen::Matrix3f& R_panel_robot, const Eigen::Vector3f& p_robot_in_panel_m, double t_s);
+  bool hasArm() const { return arm_.enabled(); }
 
   const std::vector<Primitive>& primitives() const { return primitives_; }
   const Seabed& seabed() const { return seabed_; }
@@ -66,6 +71,7 @@ class Scene {
   bool buildPanel(const Scenario& scenario, const PanelDescription& panel, double quiet_zone_m, std::uint32_t seed,
                   std::string* error);
   void addFish(const Scenario& scenario, std::uint64_t seed);
+  void addArm(const Scenario& scenario);
 
   std::vector<Primitive> primitives_;
   std::vector<Material> materials_;
@@ -73,6 +79,8 @@ class Scene {
   Seabed seabed_;
   FishSchool fish_;
   int first_fish_ = 0;
+  ManipulatorArm arm_;
+  int first_arm_ = 0;
   Eigen::Isometry3d T_odom_panel_ = Eigen::Isometry3d::Identity();
 };
 

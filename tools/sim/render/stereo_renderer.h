@@ -14,6 +14,7 @@
 #include "tools/sim/render/camera_sensor.h"
 #include "tools/sim/render/flat_port.h"
 #include "tools/sim/render/marker_layout.h"
+#include "tools/sim/render/motion_blur.h"
 #include "tools/sim/render/render_truth.h"
 #include "tools/sim/render/scene.h"
 #include "tools/sim/render/view_renderer.h"
@@ -93,6 +94,12 @@ class StereoRenderer {
   cv::Mat pinhole_depth_left_m_, pinhole_depth_right_m_;
 
   void throughPort(float* radiance, const cv::Mat& pinhole_depth_m, float* depth_m);
+
+  // camera.motion_blur (motion_blur.h), camera.arm (scene.h): the robot's pose from the left camera's.
+  bool has_blur_ = false;
+  MotionBlur blur_left_, blur_right_;
+  CameraRig rig_;
+  void placeArm(const ViewPose& left, const CameraTick& tick);
 
   // The second thread: renders view_right_ (already begun) each time render() posts a frame.
   struct RightViewThread {
