@@ -30,10 +30,50 @@ void readEnvironment(YamlSection s, EnvironmentConfig* c) {
   s.finish();
 }
 
-void readWater(YamlSection s, WaterConfig* c) {
+void readPlume(YamlSection s, SedimentPlumeConfig* c) {
+  s.number("t_start_s", &c->t_start_s, 0.0, 86400.0, "s");
+  s.numbers("centre_in_odom_m", &c->centre_in_odom_m, -1000.0, 1000.0, "m");
+  s.number("radius_m", &c->radius_m, 0.05, 50.0, "m");
+  s.number("height_m", &c->height_m, 0.05, 50.0, "m");
+  s.number("growth_mps", &c->growth_mps, 0.0, 1.0, "m/s");
+  s.number("attenuation_per_m", &c->attenuation_per_m, 0.0, 50.0, "1/m");
+  s.number("rise_s", &c->rise_s, 0.1, 3600.0, "s");
+  s.number("decay_s", &c->decay_s, 1.0, 86400.0, "s");
+  s.finish();
+}
+
+void readWater(YamlSection s, YamlReadErrors* errors, WaterConfig* c) {
   const int preset = s.choice("preset", {"clear", "moderate", "murky"});
   if (preset >= 0) c->preset = static_cast<WaterPreset>(preset);
   s.integer("fish_count", &c->fish_count, 0, 50, "(count)");
+  s.number("lamp_outside_m", &c->lamp_outside_m, 0.0, 2.0, "m");
+  s.number("lamp_above_m", &c->lamp_above_m, -2.0, 2.0, "m");
+  s.number("lamp_forward_m", &c->lamp_forward_m, -1.0, 2.0, "m");
+  s.number("lamp_beam_half_angle_deg", &c->lamp_beam_half_angle_deg, 5.0, 90.0, "deg");
+  s.boolean("lamp_backscatter", &c->lamp_backscatter);
+  s.number("scattering_albedo", &c->scattering_albedo, 0.0, 1.0, "(fraction)");
+  s.number("phase_g", &c->phase_g, 0.0, 0.99, "(mean cosine)");
+  s.numbers("current_mps", &c->current_mps, -3.0, 3.0, "m/s");
+  s.number("snow_density_per_m3", &c->snow_density_per_m3, 0.0, 5000.0, "1/m^3");
+  s.numbers("snow_diameter_mm", &c->snow_diameter_mm, 0.05, 20.0, "mm");
+  s.number("snow_sink_mps", &c->snow_sink_mps, 0.0, 0.01, "m/s");
+  s.number("snow_albedo", &c->snow_albedo, 0.0, 1.0, "(fraction)");
+  s.number("forward_scatter_mrad_per_m", &c->forward_scatter_mrad_per_m, 0.0, 100.0, "mrad/m");
+  const YAML::Node plumes = s.sequence("plumes");
+  if (plumes.IsDefined() && !plumes.IsNull()) {
+    if (!plumes.IsSequence()) {
+      errors->fail("key '" + s.keyPath("plumes") + "' must be a list");
+    } else {
+      c->plumes.clear();
+      for (std::size_t i = 0; i < plumes.size() && !errors->failed(); ++i) {
+        SedimentPlumeConfig p;
+        readPlume(YamlSection(plumes[i], s.keyPath("plumes") + "[" + std::to_string(i) + "]", errors), &p);
+        c->plumes.push_back(p);
+      }
+    }
+  }
+  if (!errors->failed() && !(c->snow_diameter_mm[0] <= c->snow_diameter_mm[1]))
+    errors->fail("key '" + s.keyPath("snow_diameter_mm") + "' must be [min, max] with min <= max");
   s.finish();
 }
 
@@ -194,49 +234,7 @@ void readTiming(YamlSection s, TimingConfig* c) {
   s.finish();
 }
 
-void readArmWindow(YamlSection s, YamlReadErrors* errors, ArmWindow* w) {
-  s.number("t_start_s", &w->t_start_s, 0.0, 1e6, "s");
-  s.number("t_end_s", &w->t_end_s, 0.0, 1e6, "s");
-  s.number("reach_m", &w->reach_m, 0.2, 1.2, "m");
-  s.number("height_m", &w->height_m, -0.5, 0.6, "m");
-  s.number("lateral_m", &w->lateral_m, -0.5, 0.5, "m");
-  s.number("deploy_s", &w->deploy_s, 0.1, 60.0, "s");
-  s.number("sway_m", &w->sway_m, 0.0, 0.2, "m");
-  s.number("sway_period_s", &w->sway_period_s, 1.0, 600.0, "s");
-  if (errors->failed()) return;
-  if (!s.has("t_start_s") || !s.has("t_end_s"))
-    return errors->fail("'" + s.path() + "' needs 't_start_s' and 't_end_s'");
-  if (!(w->t_end_s >= w->t_start_s + 2.0 * w->deploy_s))
-    return errors->fail("key '" + s.keyPath("t_end_s") + "' must be at least t_start_s + 2 deploy_s (" +
-                        std::to_string(w->t_start_s + 2.0 * w->deploy_s) + " s)");
-  s.finish();
-}
-
-void readArm(const YAML::Node& list, const std::string& path, YamlReadErrors* errors, std::vector<ArmWindow>* arm) {
-  if (!list.IsDefined() || list.IsNull()) return;
-  if (!list.IsSequence()) return errors->fail("key '" + path + "' must be a list");
-  for (std::size_t i = 0; i < list.size() && !errors->failed(); ++i) {
-    ArmWindow w;
-    readArmWindow(YamlSection(list[i], path + "[" + std::to_string(i) + "]", errors), errors, &w);
-    if (!arm->empty() && !errors->failed() && w.t_start_s < arm->back().t_end_s)
-      return errors->fail("key '" + path + "[" + std::to_string(i) + "].t_start_s' must not be before the previous "
-                          "window's end (windows in time order, not overlapping)");
-    arm->push_back(w);
-  }
-}
-
-void readCameraSensor(YamlSection s, CameraSensorConfig* c) {
-  s.number("exposure_ref_ms", &c->exposure_ref_ms, 0.01, 1000.0, "ms");
-  s.number("exposure_max_ms", &c->exposure_max_ms, 0.01, 1000.0, "ms");
-  s.number("full_well_e", &c->full_well_e, 100.0, 1e6, "e-");
-  s.number("dark_noise_e", &c->dark_noise_e, 0.0, 1000.0, "e-");
-  s.finish();
-}
-
-// camera.preset first (it sets the rig), then every explicit key, which overrides it.
-void readCamera(YamlSection s, YamlReadErrors* errors, CameraConfig* c) {
-  const int preset = s.choice("preset", {"none", "dexrov"});
-  if (preset >= 0) applyCameraPreset(static_cast<CameraPreset>(preset), c);
+void readCamera(YamlSection s, CameraConfig* c) {
   s.boolean("enabled", &c->enabled);
   s.number("rate_hz", &c->rate_hz, 0.1, 100.0, "Hz");
   s.integer("width_px", &c->width_px, 16, 8192, "px");
@@ -256,11 +254,6 @@ void readCamera(YamlSection s, YamlReadErrors* errors, CameraConfig* c) {
   port.number("n_glass", &c->port.n_glass, 1.0, 3.0, "");
   port.number("n_water", &c->port.n_water, 1.01, 2.0, "");
   port.finish();
-  s.boolean("motion_blur", &c->motion_blur);
-  const int noise = s.choice("noise_model", {"water_preset", "emva1288"});
-  if (noise >= 0) c->noise_model = static_cast<SensorNoiseModel>(noise);
-  readCameraSensor(s.section("sensor"), &c->sensor);
-  readArm(s.sequence("arm"), s.keyPath("arm"), errors, &c->arm);
   s.finish();
 }
 
@@ -363,7 +356,7 @@ bool parseScenario(const std::string& yaml_text, const std::string& source_name,
   top.text("description", &s.description);
   top.number("duration_s", &s.duration_s, 1.0, 86400.0, "s");
   readEnvironment(top.section("environment"), &s.environment);
-  readWater(top.section("water"), &s.water);
+  readWater(top.section("water"), &errors, &s.water);
   readPanel(top.section("panel"), &s.panel);
   readTrajectory(top.section("trajectory"), &s.trajectory);
   readImu(top.section("imu"), &s.imu);
@@ -371,7 +364,7 @@ bool parseScenario(const std::string& yaml_text, const std::string& source_name,
   readCompass(top.section("compass"), &errors, &s.compass);
   readDepth(top.section("depth"), &s.depth);
   readAttitude(top.section("attitude"), &s.attitude);
-  readCamera(top.section("camera"), &errors, &s.camera);
+  readCamera(top.section("camera"), &s.camera);
   readTiming(top.section("timing"), &s.timing);
   readFaults(top.sequence("faults"), &errors, &s.faults);
   top.finish();

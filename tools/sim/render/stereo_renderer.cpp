@@ -1,7 +1,6 @@
 #include "tools/sim/render/stereo_renderer.h"
 
 #include <algorithm>
-#include <cmath>
 
 #include "tools/sim/render/panel_knowledge.h"
 #include "tools/sim/render/procedural_noise.h"
@@ -9,8 +8,6 @@
 namespace deepnav::sim {
 
 namespace {
-constexpr float kLampOutside_m = 0.25f;  // lateral offset of each lamp beyond its camera
-constexpr float kLampAbove_m = 0.20f;
 constexpr double kMarkerCornerInset = 0.02;
 constexpr float kCornerHitTolerance_m = 0.002f;
 
@@ -39,6 +36,9 @@ bool StereoRenderer::init(const Scenario& scenario, const MarkerLayout& layout, 
   panel_ = makePanelDescription(scenario, layout);
   optics_ = waterOptics(scenario.water.preset);
   if (!scene_.init(scenario, panel_, layout.quiet_zone_m, seed, error)) return false;
+  effects_ = deepnav::sim::waterEffects(scenario.water, optics_);
+  plumes_.init(scenario.water.plumes, scene_.T_odom_panel(), scenario.water.current_mps);
+  snow_.init(scenario.water, scene_.T_odom_panel(), seed);
   const int w = scenario.camera.width_px, h = scenario.camera.height_px;
   has_port_ = scenario.camera.flat_port;
   if (has_port_) {
@@ -51,17 +51,14 @@ bool StereoRenderer::init(const Scenario& scenario, const MarkerLayout& layout, 
   if (!view_left_.init(view_camera, channels, optics_, &scene_, error) ||
       !view_right_.init(view_camera, channels, optics_, &scene_, error))
     return false;
+  if (effects_.any()) {
+    view_left_.setWater(effects_, &plumes_);
+    view_right_.setWater(effects_, &plumes_);
+  }
   if (!sensor_.init(w, h, channels, optics_, seed)) {
     if (error) *error = "renderer: camera sensor init failed";
     return false;
   }
-  sensor_.setSensor(scenario.camera.noise_model, scenario.camera.sensor);
-  has_blur_ = scenario.camera.motion_blur;
-  if (has_blur_ && (!blur_left_.init(view_camera, channels) || !blur_right_.init(view_camera, channels))) {
-    if (error) *error = "renderer: motion blur init failed";
-    return false;
-  }
-  if (!rig_.init(scenario.camera, error)) return false;
   radiance_left_.assign(static_cast<std::size_t>(w) * h * channels, 0.0f);
   radiance_right_.assign(static_cast<std::size_t>(w) * h * channels, 0.0f);
   depth_scratch_left_.assign(static_cast<std::size_t>(w) * h, 0.0f);
@@ -96,8 +93,11 @@ ViewPose StereoRenderer::rightView(const CameraTick& tick) const {
 
 LampSet StereoRenderer::lamps(const ViewPose& left) const {
   const float b = static_cast<float>(scenario_.camera.baseline_m);
-  const Eigen::Vector3f in_cam[2] = {Eigen::Vector3f(-kLampOutside_m, -kLampAbove_m, 0.0f),
-                                     Eigen::Vector3f(b + kLampOutside_m, -kLampAbove_m, 0.0f)};
+  const WaterConfig& w = scenario_.water;
+  const float outside = static_cast<float>(w.lamp_outside_m), above = static_cast<float>(w.lamp_above_m);
+  const float forward = static_cast<float>(w.lamp_forward_m);
+  const Eigen::Vector3f in_cam[2] = {Eigen::Vector3f(-outside, -above, forward),
+                                     Eigen::Vector3f(b + outside, -above, forward)};
   LampSet lamps;
   for (int k = 0; k < 2; ++k) lamps.p_lamp_in_panel_m[k] = left.p_cam_in_panel_m + left.R_panel_cam * in_cam[k];
   lamps.axis_in_panel = left.R_panel_cam.col(2);
@@ -125,10 +125,11 @@ bool StereoRenderer::render(const CameraTick& tick, StereoFrame* frame, RenderTr
                 truth->disparity_px.type() != CV_32F || truth->right_depth_m.size() != size ||
                 truth->right_depth_m.type() != CV_32F))
     return false;
-  scene_.setTime(static_cast<double>(tick.t_us) * 1e-6);
+  const double t_s = static_cast<double>(tick.t_us) * 1e-6;
+  scene_.setTime(t_s);
+  if (effects_.plumes) plumes_.setTime(t_s);
   const ViewPose left = leftView(tick), right = rightView(tick);
   const LampSet lamp_set = lamps(left);
-  if (scene_.hasArm()) placeArm(left, tick);
   float* depth_left = truth ? truth->depth_m.ptr<float>() : depth_scratch_left_.data();
   float* depth_right = truth ? truth->right_depth_m.ptr<float>() : depth_scratch_right_.data();
   view_left_.begin(left, lamp_set, radiance_left_.data(), has_port_ ? pinhole_depth_left_m_.ptr<float>() : depth_left);
@@ -150,18 +151,14 @@ bool StereoRenderer::render(const CameraTick& tick, StereoFrame* frame, RenderTr
       view_right_.renderTileRow(row);
     }
   }
+  if (effects_.any() || snow_.enabled())
+    finishWater(t_s, left, right, lamp_set, has_port_ ? pinhole_depth_left_m_.ptr<float>() : depth_left,
+                has_port_ ? pinhole_depth_right_m_.ptr<float>() : depth_right);
   if (has_port_) {
     throughPort(radiance_left_.data(), pinhole_depth_left_m_, depth_left);
     throughPort(radiance_right_.data(), pinhole_depth_right_m_, depth_right);
   }
   const float gain = sensor_.autoExposureGain(radiance_left_.data());
-  if (has_blur_) {
-    const float exposure_s = sensor_.exposureFor(gain).time_s;
-    blur_left_.apply(radiance_left_.data(), depth_left, tick.v_left_cam_mps, tick.w_cam_radps, exposure_s);
-    blur_right_.apply(radiance_right_.data(), depth_right, tick.v_right_cam_mps, tick.w_cam_radps, exposure_s);
-  }
-  if (has_blur_ || scenario_.camera.noise_model != SensorNoiseModel::kWaterPreset)
-    frame->exposure_us = static_cast<std::uint32_t>(std::lround(1e6 * sensor_.exposureFor(gain).time_s));
   sensor_.expose(radiance_left_.data(), gain, frameKey(tick, 0), &frame->left);
   sensor_.expose(radiance_right_.data(), gain, frameKey(tick, 1), &frame->right);
   frame->t_us = tick.t_us;
@@ -211,11 +208,18 @@ StereoRenderer::~StereoRenderer() {
   right_thread_->thread.join();
 }
 
-void StereoRenderer::placeArm(const ViewPose& left, const CameraTick& tick) {
-  // R_panel_robot = R_panel_cam R_cam_robot; the robot origin is the left camera's lever arm back.
-  const Eigen::Matrix3f R_panel_robot = left.R_panel_cam * rig_.R_robot_cam().transpose().cast<float>();
-  const Eigen::Vector3f p_robot = left.p_cam_in_panel_m - R_panel_robot * rig_.p_left_cam_in_robot_m().cast<float>();
-  scene_.placeArm(R_panel_robot, p_robot, static_cast<double>(tick.t_us) * 1e-6);
+void StereoRenderer::finishWater(double t_s, const ViewPose& left, const ViewPose& right, const LampSet& lamps,
+                                 const float* depth_left, const float* depth_right) {
+  view_left_.finishWater();
+  view_right_.finishWater();
+  if (!snow_.enabled()) return;
+  const Eigen::Vector3f rig = 0.5f * (left.p_cam_in_panel_m + right.p_cam_in_panel_m);
+  snow_.update(t_s, rig, left.R_panel_cam.col(2), lamps.p_lamp_in_panel_m, lamps.axis_in_panel, optics_,
+               effects_.beam);
+  const CameraConfig& camera = view_left_.camera();
+  snow_.draw(left.R_panel_cam, left.p_cam_in_panel_m, camera, optics_, channels_, radiance_left_.data(), depth_left);
+  snow_.draw(right.R_panel_cam, right.p_cam_in_panel_m, camera, optics_, channels_, radiance_right_.data(),
+             depth_right);
 }
 
 void StereoRenderer::throughPort(float* radiance_data, const cv::Mat& pinhole_depth_m, float* depth_m) {

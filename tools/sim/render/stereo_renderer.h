@@ -13,10 +13,11 @@
 #include "tools/sim/camera_tick.h"
 #include "tools/sim/render/camera_sensor.h"
 #include "tools/sim/render/flat_port.h"
+#include "tools/sim/render/marine_snow.h"
 #include "tools/sim/render/marker_layout.h"
-#include "tools/sim/render/motion_blur.h"
 #include "tools/sim/render/render_truth.h"
 #include "tools/sim/render/scene.h"
+#include "tools/sim/render/sediment_plume.h"
 #include "tools/sim/render/view_renderer.h"
 #include "tools/sim/render/water_optics.h"
 #include "tools/sim/scenario.h"
@@ -60,10 +61,14 @@ class StereoRenderer {
   const PanelDescription& panel() const { return panel_; }
   const Scene& scene() const { return scene_; }
   const WaterOptics& optics() const { return optics_; }
+  const WaterEffects& waterEffects() const { return effects_; }
+  // Marine snow after the last render() (tests).
+  const MarineSnow& snow() const { return snow_; }
   // Camera poses of a tick in the panel frame.
   ViewPose leftView(const CameraTick& tick) const;
   ViewPose rightView(const CameraTick& tick) const;
-  // The lamps: two, 0.25 m outside each camera and 0.2 m above the optical centres, aimed forward.
+  // The lamps: two, water.lamp_outside_m (0.25 m) outside each camera, lamp_above_m (0.2 m) above and
+  // lamp_forward_m (0) ahead of the optical centres, aimed along the left optical axis.
   LampSet lamps(const ViewPose& left) const;
   // The auto-exposure gain of the last frame (camera_sensor.h).
   float lastGain() const { return last_gain_; }
@@ -78,6 +83,9 @@ class StereoRenderer {
   PanelDescription panel_;
   Scene scene_;
   WaterOptics optics_;
+  WaterEffects effects_;  // deep-sea terms of the water keys, all off by default
+  SedimentPlumes plumes_;
+  MarineSnow snow_;
   ViewRenderer view_left_, view_right_;  // rendered band by band alternately (ViewRenderer::begin)
   CameraSensor sensor_;
   std::uint64_t seed_ = 0;
@@ -94,12 +102,9 @@ class StereoRenderer {
   cv::Mat pinhole_depth_left_m_, pinhole_depth_right_m_;
 
   void throughPort(float* radiance, const cv::Mat& pinhole_depth_m, float* depth_m);
-
-  // camera.motion_blur (motion_blur.h), camera.arm (scene.h): the robot's pose from the left camera's.
-  bool has_blur_ = false;
-  MotionBlur blur_left_, blur_right_;
-  CameraRig rig_;
-  void placeArm(const ViewPose& left, const CameraTick& tick);
+  // The deep-sea terms drawn after both views' bands: forward-scatter blur, then marine snow.
+  void finishWater(double t_s, const ViewPose& left, const ViewPose& right, const LampSet& lamps,
+                   const float* depth_left, const float* depth_right);
 
   // The second thread: renders view_right_ (already begun) each time render() posts a frame.
   struct RightViewThread {

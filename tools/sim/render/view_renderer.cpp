@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "tools/sim/render/float4.h"
 
@@ -25,6 +26,7 @@ bool ViewRenderer::init(const CameraConfig& camera, int channels, const WaterOpt
   // A lamp path plus the view path, both within range.
   water_.init(optics, 2.5f * kMaxRange_m);
   backscatter_ = Eigen::Vector4f(optics.backscatter[0], optics.backscatter[1], optics.backscatter[2], 0.0f);
+  backscatter4_ = Float4{optics.backscatter[0], optics.backscatter[1], optics.backscatter[2], 0.0f};
   const std::size_t n = scene->primitives().size();
   origin_local_.assign(n, Eigen::Vector3f::Zero());
   near_m_.assign(n, 0.0f);
@@ -66,6 +68,26 @@ void ViewRenderer::begin(const ViewPose& pose, const LampSet& lamps, float* radi
   ray_dv_ = pose.R_panel_cam.col(1) / fy;
   ray_base_ = pose.R_panel_cam.col(2) - static_cast<float>(camera_.cx_px) * ray_du_ -
               static_cast<float>(camera_.cy_px) * ray_dv_;
+  if (effects_.column())
+    column_.prepare(origin_, ray_base_, ray_du_, ray_dv_, lamps.p_lamp_in_panel_m, lamps.axis_in_panel);
+}
+
+void ViewRenderer::setWater(const WaterEffects& effects, const SedimentPlumes* plumes) {
+  effects_ = effects;
+  deep_sea_ = effects.column() || effects.forward_scatter_rad_per_m > 0.0f;
+  const int w = camera_.width_px, h = camera_.height_px;
+  if (effects.column()) column_.init(w, h, optics_, effects, plumes);
+  if (effects.forward_scatter_rad_per_m > 0.0f) {
+    forward_scatter_.init(w, h, channels_, static_cast<float>(camera_.fx_px), effects);
+    direct_.assign(static_cast<std::size_t>(w) * h * channels_, 0.0f);
+    distance_m_.assign(static_cast<std::size_t>(w) * h, 0.0f);
+    direct_out_ = direct_.data();
+    distance_out_ = distance_m_.data();
+  }
+}
+
+void ViewRenderer::finishWater() {
+  if (effects_.forward_scatter_rad_per_m > 0.0f) forward_scatter_.apply(direct_.data(), distance_m_.data(), radiance_);
 }
 
 void ViewRenderer::renderTileRow(int row) {
@@ -193,6 +215,11 @@ void ViewRenderer::intersectRow(int v, int u0, int u1, RowHits* row) const {
 }
 
 namespace {
+Float4 toFloat4(const Eigen::Vector4f& v) {
+  Float4 r;
+  std::memcpy(&r, v.data(), sizeof(r));
+  return r;
+}
 Float4 absFloat4(Float4 x) { return reinterpret_cast<Float4>(reinterpret_cast<Int4>(x) & 0x7FFFFFFF); }
 // Lane-wise a . b, summed as Eigen's dot() and squaredNorm() sum three terms: x + (y + z).
 Float4 dot3(Float4 ax, Float4 ay, Float4 az, Float4 bx, Float4 by, Float4 bz) { return ax * bx + (ay * by + az * bz); }
@@ -244,14 +271,34 @@ void ViewRenderer::shadePacket(int v, int u, int count, const SceneHit* hit, con
                                 optics_.lamp_intensity * n_l[1] * axis_l[1] * (q0 * inv_q01)};
   // A lamp behind the surface or the beam contributes nothing: its irradiance is 0 (adding 0 t leaves
   // the sum's bits as skipping it would).
-  const Float4 lit[2] = {n_l[0] <= 0.0f || axis_l[0] <= 0.0f ? Float4{} : irradiance[0],
-                         n_l[1] <= 0.0f || axis_l[1] <= 0.0f ? Float4{} : irradiance[1]};
-  const WaterPath::Place4 lamp_path[2] = {water_.locate4(sqrt4(dl2[0]) + distance),
-                                          water_.locate4(sqrt4(dl2[1]) + distance)};
+  Float4 lit[2] = {n_l[0] <= 0.0f || axis_l[0] <= 0.0f ? Float4{} : irradiance[0],
+                   n_l[1] <= 0.0f || axis_l[1] <= 0.0f ? Float4{} : irradiance[1]};
+  const Float4 dl[2] = {sqrt4(dl2[0]), sqrt4(dl2[1])};
+  if (effects_.beam.cut_off) {  // the beam's edge: axis_l / d_l is cos(phi)
+    lit[0] *= effects_.beam.cut(axis_l[0] / dl[0]);
+    lit[1] *= effects_.beam.cut(axis_l[1] / dl[1]);
+  }
+  const WaterPath::Place4 lamp_path[2] = {water_.locate4(dl[0] + distance), water_.locate4(dl[1] + distance)};
   const WaterPath::Place4 view_path = water_.locate4(distance);
   Eigen::Vector4f albedo[4];
   scene_->albedo4(hit, origin_, d, px, py, footprint2, albedo);
   float* out = radiance_ + (static_cast<std::size_t>(v) * camera_.width_px + u) * channels_;
+  if (deep_sea_) {
+    const Float4 position = effects_.column() ? column_.samplePosition4(distance) : Float4{};
+    for (int i = 0; i < count; ++i, out += channels_) {
+      const bool surface = hit[i].primitive != -2;
+      Eigen::Vector4f E = Eigen::Vector4f::Zero(), view = Eigen::Vector4f::Ones();
+      if (surface) {
+        E += lit[0][i] * water_.interpolate(lamp_path[0].row[i], lamp_path[0].fraction[i]);
+        E += lit[1][i] * water_.interpolate(lamp_path[1].row[i], lamp_path[1].fraction[i]);
+        view = water_.interpolate(view_path.row[i], view_path.fraction[i]);
+      }
+      const float cos2 = inv_length[i] * inv_length[i];
+      shadeDeepSea(v, u + i, surface, distance[i], position[i], toFloat4(albedo[i]), toFloat4(E), toFloat4(view),
+                   cos2 * cos2, out);
+    }
+    return;
+  }
   for (int i = 0; i < count; ++i, out += channels_) {
     Eigen::Vector4f L = backscatter_;
     if (hit[i].primitive != -2) {
@@ -269,6 +316,38 @@ void ViewRenderer::shadePacket(int v, int u, int count, const SceneHit* hit, con
     } else {
       out[0] = 0.114f * L[0] + 0.587f * L[1] + 0.299f * L[2];
     }
+  }
+}
+
+void ViewRenderer::shadeDeepSea(int v, int u, bool surface, float distance_m, float column_position, Float4 albedo,
+                                Float4 E, Float4 transmittance, float cos4, float* out) const {
+  // Column: lanes 0-2 the lamps' backscatter up to the hit (or over the whole range in open water), lane 3
+  // the plumes' transmittance there (1 without plumes). All in registers (Float4): building a vector from
+  // lanes stored one by one would stall on store forwarding.
+  const Float4 column = effects_.column()
+                            ? column_.at(u, v, surface ? column_position : WaterColumn::kLastPosition)
+                            : Float4{0.0f, 0.0f, 0.0f, 1.0f};
+  const float plume_t = column[3];
+  Float4 direct{};
+  Float4 veil = backscatter4_;
+  if (surface) {
+    // The lamp's path through the plumes taken as the view path's (water_column.h): T_p^2.
+    direct = albedo * E * (plume_t * plume_t);
+    veil = backscatter4_ * (1.0f - plume_t * transmittance);
+  }
+  if (effects_.lamp_backscatter) veil = column * Float4{1.0f, 1.0f, 1.0f, 0.0f};
+  direct *= cos4;
+  const Float4 L = direct + veil * cos4;
+  const std::size_t pixel = static_cast<std::size_t>(v) * camera_.width_px + u;
+  const bool blur = effects_.forward_scatter_rad_per_m > 0.0f;
+  if (blur) distance_out_[pixel] = surface ? distance_m : 0.0f;
+  float* direct_out = blur ? direct_out_ + pixel * channels_ : nullptr;
+  if (channels_ == 3) {
+    out[0] = L[0], out[1] = L[1], out[2] = L[2];
+    if (direct_out) direct_out[0] = direct[0], direct_out[1] = direct[1], direct_out[2] = direct[2];
+  } else {
+    out[0] = 0.114f * L[0] + 0.587f * L[1] + 0.299f * L[2];
+    if (direct_out) direct_out[0] = 0.114f * direct[0] + 0.587f * direct[1] + 0.299f * direct[2];
   }
 }
 

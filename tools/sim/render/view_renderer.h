@@ -6,7 +6,10 @@
 #include <Eigen/Core>
 
 #include "tools/sim/render/float4.h"
+#include "tools/sim/render/forward_scatter.h"
 #include "tools/sim/render/scene.h"
+#include "tools/sim/render/sediment_plume.h"
+#include "tools/sim/render/water_column.h"
 #include "tools/sim/render/water_optics.h"
 #include "tools/sim/render/water_path.h"
 #include "tools/sim/sensors/camera_rig.h"
@@ -41,6 +44,12 @@ class ViewRenderer {
 
   bool init(const CameraConfig& camera, int channels, const WaterOptics& optics, const Scene* scene,
             std::string* error);
+  // The deep-sea terms (after init; none by default): the beam's cut-off, the water column (lamp
+  // backscatter and plumes, water_column.h; `plumes` must outlive the renderer and be set to the frame's
+  // time before begin()) and the forward-scatter blur, applied by finishWater() once every band is drawn.
+  void setWater(const WaterEffects& effects, const SedimentPlumes* plumes);
+  void finishWater();
+  const CameraConfig& camera() const { return camera_; }
   // radiance: width * height * channels floats; depth_m: width * height floats (0 = no hit).
   void render(const ViewPose& pose, const LampSet& lamps, float* radiance, float* depth_m);
   // The same in steps: begin() sets up the frame, then each renderTileRow(r), r < tileRows(), draws the
@@ -94,6 +103,11 @@ class ViewRenderer {
   // same order as a scalar evaluation, so the result does not depend on the grouping.
   void shadePacket(int v, int u, int count, const SceneHit* hit, const Eigen::Vector3f* d,
                    const Eigen::Vector2f* slope) const;
+  // The deep-sea shading of pixel (u, v) (README: deep-sea image formation): the surface term E (lamp
+  // light, already through the water; ignored without a hit) and albedo, the column looked up at the hit's
+  // distance. Writes the radiance and, for the blur, the surface term and distance.
+  void shadeDeepSea(int v, int u, bool hit, float distance_m, float column_position, Float4 albedo, Float4 E,
+                    Float4 transmittance, float cos4, float* out) const;
 
   CameraConfig camera_;
   float inv_fx_ = 1.0f;
@@ -102,6 +116,7 @@ class ViewRenderer {
   WaterOptics optics_;
   WaterPath water_;
   Eigen::Vector4f backscatter_ = Eigen::Vector4f::Zero();  // B_inf, lanes 0-2
+  Float4 backscatter4_{};                                  // the same in a register
   std::vector<PixelRay> pixel_rays_;
   // Per frame.
   LampSet lamps_;
@@ -120,6 +135,14 @@ class ViewRenderer {
     Float4 base, du, dv;  // x, y, z in lanes 0-2: one SSE operation per term instead of three
   };
   std::vector<Candidate> candidates_;
+  // Deep-sea water (setWater): off unless a term is on.
+  WaterEffects effects_;
+  bool deep_sea_ = false;  // the column or the blur: shadeDeepSea instead of the plain equation
+  WaterColumn column_;
+  ForwardScatter forward_scatter_;
+  std::vector<float> direct_, distance_m_;  // per pixel, for the blur: surface radiance, hit distance
+  float* direct_out_ = nullptr;             // their data, written by the (const) shading
+  float* distance_out_ = nullptr;
 };
 
 }  // namespace deepnav::sim

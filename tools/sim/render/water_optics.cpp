@@ -1,5 +1,7 @@
 #include "tools/sim/render/water_optics.h"
 
+#include <cmath>
+
 namespace deepnav::sim {
 
 // Attenuation coefficients: clear is of the order of Jerlov's open-ocean types, moderate of coastal
@@ -33,6 +35,28 @@ WaterOptics waterOptics(WaterPreset preset) {
       break;
   }
   return w;
+}
+
+double henyeyGreensteinBackscatterRatio(double g) {
+  // The integral of p over the backward hemisphere, 2 pi int_{-1}^{0} p(mu) dmu, in closed form.
+  if (g == 0.0) return 0.5;
+  return (1.0 - g) / (2.0 * g) * ((1.0 + g) / std::sqrt(1.0 + g * g) - 1.0);
+}
+
+WaterEffects waterEffects(const WaterConfig& config, const WaterOptics& optics) {
+  WaterEffects e;
+  e.beam = LampBeam::fromHalfAngle(config.lamp_beam_half_angle_deg);
+  e.lamp_backscatter = config.lamp_backscatter;
+  e.plumes = !config.plumes.empty();
+  e.phase.g = static_cast<float>(config.phase_g);
+  e.scattering_albedo = static_cast<float>(config.scattering_albedo);
+  e.forward_scatter_rad_per_m = static_cast<float>(1e-3 * config.forward_scatter_mrad_per_m);
+  const double forward = 1.0 - henyeyGreensteinBackscatterRatio(config.phase_g);
+  for (int c = 0; c < 3; ++c) {
+    e.scattering_per_m[c] = static_cast<float>(config.scattering_albedo * optics.attenuation_per_m[c]);
+    e.forward_scatter_per_m[c] = static_cast<float>(forward * e.scattering_per_m[c]);
+  }
+  return e;
 }
 
 }  // namespace deepnav::sim
