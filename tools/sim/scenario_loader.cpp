@@ -234,7 +234,49 @@ void readTiming(YamlSection s, TimingConfig* c) {
   s.finish();
 }
 
-void readCamera(YamlSection s, CameraConfig* c) {
+void readArmWindow(YamlSection s, YamlReadErrors* errors, ArmWindow* w) {
+  s.number("t_start_s", &w->t_start_s, 0.0, 1e6, "s");
+  s.number("t_end_s", &w->t_end_s, 0.0, 1e6, "s");
+  s.number("reach_m", &w->reach_m, 0.2, 1.2, "m");
+  s.number("height_m", &w->height_m, -0.5, 0.6, "m");
+  s.number("lateral_m", &w->lateral_m, -0.5, 0.5, "m");
+  s.number("deploy_s", &w->deploy_s, 0.1, 60.0, "s");
+  s.number("sway_m", &w->sway_m, 0.0, 0.2, "m");
+  s.number("sway_period_s", &w->sway_period_s, 1.0, 600.0, "s");
+  if (errors->failed()) return;
+  if (!s.has("t_start_s") || !s.has("t_end_s"))
+    return errors->fail("'" + s.path() + "' needs 't_start_s' and 't_end_s'");
+  if (!(w->t_end_s >= w->t_start_s + 2.0 * w->deploy_s))
+    return errors->fail("key '" + s.keyPath("t_end_s") + "' must be at least t_start_s + 2 deploy_s (" +
+                        std::to_string(w->t_start_s + 2.0 * w->deploy_s) + " s)");
+  s.finish();
+}
+
+void readArm(const YAML::Node& list, const std::string& path, YamlReadErrors* errors, std::vector<ArmWindow>* arm) {
+  if (!list.IsDefined() || list.IsNull()) return;
+  if (!list.IsSequence()) return errors->fail("key '" + path + "' must be a list");
+  for (std::size_t i = 0; i < list.size() && !errors->failed(); ++i) {
+    ArmWindow w;
+    readArmWindow(YamlSection(list[i], path + "[" + std::to_string(i) + "]", errors), errors, &w);
+    if (!arm->empty() && !errors->failed() && w.t_start_s < arm->back().t_end_s)
+      return errors->fail("key '" + path + "[" + std::to_string(i) + "].t_start_s' must not be before the previous "
+                          "window's end (windows in time order, not overlapping)");
+    arm->push_back(w);
+  }
+}
+
+void readCameraSensor(YamlSection s, CameraSensorConfig* c) {
+  s.number("exposure_ref_ms", &c->exposure_ref_ms, 0.01, 1000.0, "ms");
+  s.number("exposure_max_ms", &c->exposure_max_ms, 0.01, 1000.0, "ms");
+  s.number("full_well_e", &c->full_well_e, 100.0, 1e6, "e-");
+  s.number("dark_noise_e", &c->dark_noise_e, 0.0, 1000.0, "e-");
+  s.finish();
+}
+
+// camera.preset first (it sets the rig), then every explicit key, which overrides it.
+void readCamera(YamlSection s, YamlReadErrors* errors, CameraConfig* c) {
+  const int preset = s.choice("preset", {"none", "dexrov"});
+  if (preset >= 0) applyCameraPreset(static_cast<CameraPreset>(preset), c);
   s.boolean("enabled", &c->enabled);
   s.number("rate_hz", &c->rate_hz, 0.1, 100.0, "Hz");
   s.integer("width_px", &c->width_px, 16, 8192, "px");
@@ -254,6 +296,11 @@ void readCamera(YamlSection s, CameraConfig* c) {
   port.number("n_glass", &c->port.n_glass, 1.0, 3.0, "");
   port.number("n_water", &c->port.n_water, 1.01, 2.0, "");
   port.finish();
+  s.boolean("motion_blur", &c->motion_blur);
+  const int noise = s.choice("noise_model", {"water_preset", "emva1288"});
+  if (noise >= 0) c->noise_model = static_cast<SensorNoiseModel>(noise);
+  readCameraSensor(s.section("sensor"), &c->sensor);
+  readArm(s.sequence("arm"), s.keyPath("arm"), errors, &c->arm);
   s.finish();
 }
 
@@ -364,7 +411,7 @@ bool parseScenario(const std::string& yaml_text, const std::string& source_name,
   readCompass(top.section("compass"), &errors, &s.compass);
   readDepth(top.section("depth"), &s.depth);
   readAttitude(top.section("attitude"), &s.attitude);
-  readCamera(top.section("camera"), &s.camera);
+  readCamera(top.section("camera"), &errors, &s.camera);
   readTiming(top.section("timing"), &s.timing);
   readFaults(top.sequence("faults"), &errors, &s.faults);
   top.finish();

@@ -1,6 +1,7 @@
 #include "tools/sim/render/stereo_renderer.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "tools/sim/render/panel_knowledge.h"
 #include "tools/sim/render/procedural_noise.h"
@@ -59,6 +60,13 @@ bool StereoRenderer::init(const Scenario& scenario, const MarkerLayout& layout, 
     if (error) *error = "renderer: camera sensor init failed";
     return false;
   }
+  sensor_.setSensor(scenario.camera.noise_model, scenario.camera.sensor);
+  has_blur_ = scenario.camera.motion_blur;
+  if (has_blur_ && (!blur_left_.init(view_camera, channels) || !blur_right_.init(view_camera, channels))) {
+    if (error) *error = "renderer: motion blur init failed";
+    return false;
+  }
+  if (!rig_.init(scenario.camera, error)) return false;
   radiance_left_.assign(static_cast<std::size_t>(w) * h * channels, 0.0f);
   radiance_right_.assign(static_cast<std::size_t>(w) * h * channels, 0.0f);
   depth_scratch_left_.assign(static_cast<std::size_t>(w) * h, 0.0f);
@@ -130,6 +138,7 @@ bool StereoRenderer::render(const CameraTick& tick, StereoFrame* frame, RenderTr
   if (effects_.plumes) plumes_.setTime(t_s);
   const ViewPose left = leftView(tick), right = rightView(tick);
   const LampSet lamp_set = lamps(left);
+  if (scene_.hasArm()) placeArm(left, tick);
   float* depth_left = truth ? truth->depth_m.ptr<float>() : depth_scratch_left_.data();
   float* depth_right = truth ? truth->right_depth_m.ptr<float>() : depth_scratch_right_.data();
   view_left_.begin(left, lamp_set, radiance_left_.data(), has_port_ ? pinhole_depth_left_m_.ptr<float>() : depth_left);
@@ -159,6 +168,13 @@ bool StereoRenderer::render(const CameraTick& tick, StereoFrame* frame, RenderTr
     throughPort(radiance_right_.data(), pinhole_depth_right_m_, depth_right);
   }
   const float gain = sensor_.autoExposureGain(radiance_left_.data());
+  if (has_blur_) {
+    const float exposure_s = sensor_.exposureFor(gain).time_s;
+    blur_left_.apply(radiance_left_.data(), depth_left, tick.v_left_cam_mps, tick.w_cam_radps, exposure_s);
+    blur_right_.apply(radiance_right_.data(), depth_right, tick.v_right_cam_mps, tick.w_cam_radps, exposure_s);
+  }
+  if (has_blur_ || scenario_.camera.noise_model != SensorNoiseModel::kWaterPreset)
+    frame->exposure_us = static_cast<std::uint32_t>(std::lround(1e6 * sensor_.exposureFor(gain).time_s));
   sensor_.expose(radiance_left_.data(), gain, frameKey(tick, 0), &frame->left);
   sensor_.expose(radiance_right_.data(), gain, frameKey(tick, 1), &frame->right);
   frame->t_us = tick.t_us;
@@ -220,6 +236,13 @@ void StereoRenderer::finishWater(double t_s, const ViewPose& left, const ViewPos
   snow_.draw(left.R_panel_cam, left.p_cam_in_panel_m, camera, optics_, channels_, radiance_left_.data(), depth_left);
   snow_.draw(right.R_panel_cam, right.p_cam_in_panel_m, camera, optics_, channels_, radiance_right_.data(),
              depth_right);
+}
+
+void StereoRenderer::placeArm(const ViewPose& left, const CameraTick& tick) {
+  // R_panel_robot = R_panel_cam R_cam_robot; the robot origin is the left camera's lever arm back.
+  const Eigen::Matrix3f R_panel_robot = left.R_panel_cam * rig_.R_robot_cam().transpose().cast<float>();
+  const Eigen::Vector3f p_robot = left.p_cam_in_panel_m - R_panel_robot * rig_.p_left_cam_in_robot_m().cast<float>();
+  scene_.placeArm(R_panel_robot, p_robot, static_cast<double>(tick.t_us) * 1e-6);
 }
 
 void StereoRenderer::throughPort(float* radiance_data, const cv::Mat& pinhole_depth_m, float* depth_m) {

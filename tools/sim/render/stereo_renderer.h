@@ -15,6 +15,7 @@
 #include "tools/sim/render/flat_port.h"
 #include "tools/sim/render/marine_snow.h"
 #include "tools/sim/render/marker_layout.h"
+#include "tools/sim/render/motion_blur.h"
 #include "tools/sim/render/render_truth.h"
 #include "tools/sim/render/scene.h"
 #include "tools/sim/render/sediment_plume.h"
@@ -102,6 +103,12 @@ class StereoRenderer {
   cv::Mat pinhole_depth_left_m_, pinhole_depth_right_m_;
 
   void throughPort(float* radiance, const cv::Mat& pinhole_depth_m, float* depth_m);
+
+  // camera.motion_blur (motion_blur.h), camera.arm (scene.h): the robot's pose from the left camera's.
+  bool has_blur_ = false;
+  MotionBlur blur_left_, blur_right_;
+  CameraRig rig_;
+  void placeArm(const ViewPose& left, const CameraTick& tick);
   // The deep-sea terms drawn after both views' bands: forward-scatter blur, then marine snow.
   void finishWater(double t_s, const ViewPose& left, const ViewPose& right, const LampSet& lamps,
                    const float* depth_left, const float* depth_right);
