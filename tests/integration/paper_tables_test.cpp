@@ -18,7 +18,8 @@ std::string summaryJson(double odom_pos_m, const std::string& panel_error, doubl
   o << "{\"position_error_m\": {\"mean\": " << odom_pos_m << "}, \"orientation_error_deg\": {\"mean\": "
     << 10 * odom_pos_m << "},\n \"odom_error\": {\"whole\": {}, \"stage2\": null},\n \"panel_error\": " << panel_error
     << ",\n \"ate\": {\"position_rmse_m\": " << odom_pos_m / 2 << ", \"rotation_rmse_deg\": 0.5},\n"
-    << " \"rpe\": {\"pairs\": 12, \"translation_percent\": {\"mean\": 1.5}, \"rotation_deg_per_m\": {\"mean\": 0.25}},\n"
+    << " \"rpe\": {\"pairs\": 12, \"translation_percent\": {\"mean\": 1.5}, "
+    << "\"rotation_deg_per_m\": {\"mean\": 0.25}},\n"
     << " \"nees\": {\"position\": {\"in_band_fraction\": " << nees_in_band
     << ", \"mean\": 3.0}, \"heading\": {\"in_band_fraction\": 0.9, \"mean\": 1.0}},\n"
     << " \"smoothness_m_a\": 0.99, \"stage2_at_s\": -1, \"vo\": {\"accepted\": 0, \"accepted_orb\": 0, "
