@@ -47,6 +47,9 @@ struct BenchRun {
   TimeUs last_us = 0;
   bool any = false;
   ReplayTap* tap = nullptr;
+  // The dead-reckoning run (markers.enabled false, vision.vo_mode none): no vision result can reach the
+  // filter and the stage-1 map is never used (no panel, no stage 2), so the pairs are not processed.
+  bool vision_off = false;
 };
 
 // The VO results VoFusion will be offered (it fuses in stage 2 only, the stage of the last tick), per
@@ -95,6 +98,7 @@ bool initRun(const ReplayOptions& o, const RecordingReader& reader, BenchRun* ru
     return false;
   }
   if (!run->vision.init(visionConfig(run->setup), error)) return false;
+  run->vision_off = !c.markers.enabled && c.vision.vo_mode == "none";
   run->context.init(robotFromCamera(run->setup));
   if (!run->core.init(run->setup, &run->writer, error)) return false;
   // A run of `deepnav run` that started from its saved workspace (service.state_dir): its stage machine
@@ -225,6 +229,10 @@ bool onRerunEvent(BenchRun* run, const ReplayEvent& e) {
     case ReplayEvent::Kind::kFrame:
       noteTime(run, e.t_us);
       advanceTicksTo(run, e.t_us);
+      if (run->vision_off) {
+        ++run->summary->frames_not_processed;
+        return true;
+      }
       runVision(run, *e.frame);
       return true;
     case ReplayEvent::Kind::kInput:

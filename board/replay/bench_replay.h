@@ -53,6 +53,7 @@ struct ReplaySummary {
   bool reproduce = false;        // followed the recorded ticks (and compared the outputs)
   std::uint64_t ticks = 0;
   std::uint64_t frames = 0;
+  std::uint64_t frames_not_processed = 0;  // dead-reckoning run: pairs read but given to no vision
   std::uint64_t solutions_compared = 0;
   std::uint64_t mismatches = 0;  // recorded vs replayed NavSolution, bit for bit
   double dive_s = 0.0;           // recording time span

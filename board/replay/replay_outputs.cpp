@@ -264,6 +264,11 @@ std::string formatReplaySummary(const ReplaySummary& s) {
                 s.dive_s, s.wall_s, s.wall_s > 0 ? s.dive_s / s.wall_s : 0.0,
                 static_cast<unsigned long long>(s.ticks), static_cast<unsigned long long>(s.frames));
   o << line;
+  if (s.frames_not_processed > 0) {
+    std::snprintf(line, sizeof line, "dead reckoning (no markers, no VO): %llu stereo pairs not processed\n",
+                  static_cast<unsigned long long>(s.frames_not_processed));
+    o << line;
+  }
   if (s.reproduce) {
     std::snprintf(line, sizeof line, "outputs compared bit for bit: %llu, mismatches: %llu\n",
                   static_cast<unsigned long long>(s.solutions_compared), static_cast<unsigned long long>(s.mismatches));

@@ -108,11 +108,13 @@ TEST_F(ReplayTest, DeadReckoningRunUsesTheNavigationSensorsOnly) {
   // GIVEN the 15 s dive WHEN replayed as the dead-reckoning run (no VO, no markers)
   const std::string out = ::testing::TempDir() + "replay_dr";
   const ReplaySummary s = replayWith(dive_, out, {"vision.vo_mode=none", "markers.enabled=false"});
-  // THEN it ticks through the whole dive in stage 1, every pair still goes through the vision worker, no
-  // marker pose is fused and no panel is ever fixed (that the worker then detects no marker is
-  // board_config_test's MarkersEnabledKeySwitchesTheWholeMarkerChain: this dive's first 15 s show none)
+  // THEN it ticks through the whole dive in stage 1, no pair goes through the vision worker (nothing it
+  // gives could be fused), no marker pose is fused and no panel is ever fixed (that the worker detects no
+  // marker with the key off is board_config_test's MarkersEnabledKeySwitchesTheWholeMarkerChain)
   EXPECT_NEAR(static_cast<double>(s.ticks), 1500.0, 2.0);
-  EXPECT_EQ(s.frames, 151u);
+  EXPECT_EQ(s.frames, 0u);
+  EXPECT_EQ(s.frames_not_processed, 151u);
+  EXPECT_EQ(s.inputs.vision, 0u);
   EXPECT_EQ(s.markers.observations, 0u);
   EXPECT_EQ(s.modalities.markers.offered, 0u);
   EXPECT_LT(s.panel_fixed_at_s, 0.0);
