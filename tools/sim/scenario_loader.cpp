@@ -87,7 +87,34 @@ void readPanel(YamlSection s, PanelGeometry* c) {
   s.finish();
 }
 
-void readTrajectory(YamlSection s, TrajectoryConfig* c) {
+// One waypoint of `trajectory.plan`; absent keys keep the previous waypoint's values (times excepted).
+void readWaypoint(YamlSection s, PlanWaypoint* w) {
+  s.number("bearing_deg", &w->bearing_deg, -720.0, 720.0, "deg");
+  s.number("standoff_m", &w->standoff_m, 0.3, 200.0, "m");
+  s.number("depth_m", &w->depth_m, 0.0, kMaxDepth_m, "m");
+  s.number("face_alignment", &w->face_alignment, 0.0, 1.0, "(fraction)");
+  s.number("move_s", &w->move_s, 0.0, 3600.0, "s");
+  s.number("hold_s", &w->hold_s, 0.0, 86400.0, "s");
+  s.finish();
+}
+
+void readPlan(const YAML::Node& list, const std::string& path, YamlReadErrors* errors,
+              std::vector<PlanWaypoint>* plan) {
+  if (!list.IsDefined() || list.IsNull()) return;
+  if (!list.IsSequence()) return errors->fail("key '" + path + "' must be a list");
+  for (std::size_t i = 0; i < list.size() && !errors->failed(); ++i) {
+    PlanWaypoint w = plan->empty() ? PlanWaypoint{} : plan->back();
+    w.move_s = 0.0;
+    w.hold_s = 0.0;
+    const std::string item = path + "[" + std::to_string(i) + "]";
+    readWaypoint(YamlSection(list[i], item, errors), &w);
+    if (i > 0 && !(w.move_s > 0.0) && !errors->failed())
+      return errors->fail("key '" + item + ".move_s' must be > 0 after the first waypoint");
+    plan->push_back(w);
+  }
+}
+
+void readTrajectory(YamlSection s, YamlReadErrors* errors, TrajectoryConfig* c) {
   s.number("standoff_m", &c->standoff_m, 0.3, 20.0, "m");
   s.number("start_distance_m", &c->start_distance_m, 0.3, 200.0, "m");
   s.number("start_depth_m", &c->start_depth_m, 0.0, kMaxDepth_m, "m");
@@ -104,6 +131,7 @@ void readTrajectory(YamlSection s, TrajectoryConfig* c) {
   s.number("pitch_amplitude_deg", &c->pitch_amplitude_deg, 0.0, 30.0, "deg");
   s.number("yaw_amplitude_deg", &c->yaw_amplitude_deg, 0.0, 90.0, "deg");
   s.number("disturbance_period_s", &c->disturbance_period_s, 1.0, 600.0, "s");
+  readPlan(s.sequence("plan"), s.keyPath("plan"), errors, &c->plan);
   s.finish();
 }
 
@@ -373,6 +401,10 @@ void checkConsistency(const Scenario& s, YamlReadErrors* errors) {
   if (!(s.trajectory.circle_depth_m < seabed) || !(s.trajectory.start_depth_m < seabed))
     return errors->fail("keys 'trajectory.start_depth_m' and 'trajectory.circle_depth_m' must be shallower than "
                         "'environment.seabed_depth_m' (" + std::to_string(seabed) + " m)");
+  for (std::size_t i = 0; i < s.trajectory.plan.size(); ++i)
+    if (!(s.trajectory.plan[i].depth_m < seabed))
+      return errors->fail("key 'trajectory.plan[" + std::to_string(i) + "].depth_m' must be shallower than "
+                          "'environment.seabed_depth_m' (" + std::to_string(seabed) + " m)");
   if (!(s.dvl.min_altitude_m < s.dvl.max_altitude_m))
     return errors->fail("key 'dvl.min_altitude_m' must be less than 'dvl.max_altitude_m'");
   if (!(s.panel.corner_radius_m < s.panel.half_width_m))
@@ -405,7 +437,7 @@ bool parseScenario(const std::string& yaml_text, const std::string& source_name,
   readEnvironment(top.section("environment"), &s.environment);
   readWater(top.section("water"), &errors, &s.water);
   readPanel(top.section("panel"), &s.panel);
-  readTrajectory(top.section("trajectory"), &s.trajectory);
+  readTrajectory(top.section("trajectory"), &errors, &s.trajectory);
   readImu(top.section("imu"), &s.imu);
   readDvl(top.section("dvl"), &s.dvl);
   readCompass(top.section("compass"), &errors, &s.compass);
