@@ -34,9 +34,28 @@ void renderTick(benchmark::State& state, const Scenario& scenario, const deepnav
   }
 }
 
-void renderPair(benchmark::State& state, double t_s, int channels, int fish) {
+// The deep-sea terms as tools/sim/scenarios/murky-snow-plume.yaml sets them: murky water, lamp backscatter
+// with 45 deg beams, marine snow (500 per m^3) in a 5 cm/s current, a plume raised at the valves face at
+// 26 s, forward-scatter blur.
+void deepSea(Scenario* s) {
+  s->water.preset = deepnav::sim::WaterPreset::kMurky;
+  s->water.lamp_beam_half_angle_deg = 45.0;
+  s->water.lamp_backscatter = true;
+  s->water.current_mps = {0.05, 0.0, 0.0};
+  s->water.snow_density_per_m3 = 500.0;
+  s->water.forward_scatter_mrad_per_m = 5.0;
+  deepnav::sim::SedimentPlumeConfig plume;
+  plume.t_start_s = 26.0;
+  plume.centre_in_odom_m = {-0.2, 1.7};
+  plume.radius_m = 0.8;
+  plume.height_m = 0.6;
+  s->water.plumes = {plume};
+}
+
+void renderPair(benchmark::State& state, double t_s, int channels, int fish, bool deep_sea = false) {
   Scenario scenario;
   scenario.water.fish_count = fish;
+  if (deep_sea) deepSea(&scenario);
   std::string error;
   SensorSimulator sim;
   StereoRenderer renderer;
@@ -61,6 +80,11 @@ void BM_RenderCornerGrey(benchmark::State& s) { renderPair(s, 57.0, 1, 0); }
 void BM_RenderApproachGrey(benchmark::State& s) { renderPair(s, 12.0, 1, 0); }
 void BM_RenderDwellBgr(benchmark::State& s) { renderPair(s, 36.0, 3, 0); }
 void BM_RenderCornerGreyWithFish(benchmark::State& s) { renderPair(s, 57.0, 1, 8); }
+// The same dive poses with every deep-sea term on (murky-snow-plume.yaml).
+void BM_RenderDwellGreyDeepSea(benchmark::State& s) { renderPair(s, 36.0, 1, 0, true); }
+void BM_RenderCornerGreyDeepSea(benchmark::State& s) { renderPair(s, 57.0, 1, 0, true); }
+void BM_RenderApproachGreyDeepSea(benchmark::State& s) { renderPair(s, 12.0, 1, 0, true); }
+void BM_RenderDwellBgrDeepSea(benchmark::State& s) { renderPair(s, 36.0, 3, 0, true); }
 
 // The worst case for the seabed march: 3 m from the front face, pitched 35 deg down, mostly seabed.
 void BM_RenderSeabedGrey(benchmark::State& s) {
@@ -89,6 +113,10 @@ BENCHMARK(BM_RenderCornerGrey)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RenderApproachGrey)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RenderDwellBgr)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RenderCornerGreyWithFish)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RenderDwellGreyDeepSea)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RenderCornerGreyDeepSea)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RenderApproachGreyDeepSea)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_RenderDwellBgrDeepSea)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RenderSeabedGrey)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_RenderSeabedGreyTwoThreads)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_RendererInit)->Unit(benchmark::kMillisecond);

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "tools/sim/render/float4_exp.h"
+
 namespace deepnav::sim {
 
 void ForwardScatter::init(int width_px, int height_px, int channels, float fx_px, const WaterEffects& effects) {
@@ -10,6 +12,7 @@ void ForwardScatter::init(int width_px, int height_px, int channels, float fx_px
   px_per_m_ = fx_px * effects.forward_scatter_rad_per_m;
   std::array<float, 3> b = effects.forward_scatter_per_m;
   if (channels == 1) b = {b[1], b[1], b[1]};  // grey: mostly green (0.587 G)
+  forward_grey_per_m_ = b[0];
   // Ranges up to the renderer's 40 m.
   scattered_.resize(static_cast<std::size_t>(40.0f / kStep_m) + 2);
   for (std::size_t i = 0; i < scattered_.size(); ++i) {
@@ -75,10 +78,22 @@ void ForwardScatter::upsampledRow(int level, int v, float* out) const {
 }
 
 void ForwardScatter::apply(const float* direct, const float* distance_m, float* radiance) {
-  // Each pixel's pyramid level (-1: open water), and the levels this frame needs.
-  float lowest = static_cast<float>(kLevels), highest = -1.0f;
+  // Each pixel's pyramid level (-1: open water), four at a time, and the levels this frame needs.
+  Float4 low4 = Float4{} + static_cast<float>(kLevels), high4 = Float4{} - 1.0f;
   const std::size_t pixels = static_cast<std::size_t>(width_) * height_;
-  for (std::size_t i = 0; i < pixels; ++i) {
+  std::size_t i = 0;
+  for (; i + 4 <= pixels; i += 4) {
+    const Float4 d = loadFloat4(distance_m + i);
+    Float4 level = levelOf4(px_per_m_ * d);
+    level = level > static_cast<float>(kLevels) ? Float4{} + static_cast<float>(kLevels) : level;
+    level = d > 0.0f ? level : Float4{} - 1.0f;
+    std::memcpy(level_map_.data() + i, &level, sizeof(level));
+    high4 = level > high4 ? level : high4;
+    low4 = (level >= 0.0f) & (level < low4) ? level : low4;
+  }
+  float lowest = std::min(std::min(low4[0], low4[1]), std::min(low4[2], low4[3]));
+  float highest = std::max(std::max(high4[0], high4[1]), std::max(high4[2], high4[3]));
+  for (; i < pixels; ++i) {
     const float level = distance_m[i] > 0.0f ? std::min(levelOf(px_per_m_ * distance_m[i]), static_cast<float>(kLevels)) : -1.0f;
     level_map_[i] = level;
     if (level >= 0.0f) lowest = std::min(lowest, level), highest = std::max(highest, level);
@@ -117,7 +132,17 @@ void ForwardScatter::apply(const float* direct, const float* distance_m, float* 
       }
     }
     float* out = radiance + static_cast<std::size_t>(v) * row_n;
-    for (int u = 0; u < width_; ++u) {
+    int u = 0;
+    if (c == 1) {  // four pixels at a time: 1 - exp(-b_f R) by exp4, open water masked out
+      for (; u + 4 <= width_; u += 4) {
+        const Float4 range = loadFloat4(dist + u);
+        const Float4 scattered = 1.0f - exp4(-forward_grey_per_m_ * range);
+        const Float4 change = scattered * (loadFloat4(blurred_row_.data() + u) - loadFloat4(d + u));
+        const Float4 sum = loadFloat4(out + u) + (loadFloat4(level + u) >= 0.0f ? change : Float4{});
+        std::memcpy(out + u, &sum, sizeof(sum));
+      }
+    }
+    for (; u < width_; ++u) {
       if (level[u] < 0.0f) continue;
       // 1 - exp(-b_f R) per channel, from the table.
       const float x = std::min(dist[u] * (1.0f / kStep_m), last);

@@ -43,6 +43,13 @@ class ForwardScatter {
     std::memcpy(&mantissa, &mantissa_bits, sizeof(mantissa));
     return static_cast<float>(exponent) + mantissa;
   }
+  // The same for four sigmas (lanes).
+  static Float4 levelOf4(Float4 sigma_px) {
+    const Int4 bits = reinterpret_cast<Int4>(sigma_px);
+    const Float4 exponent = __builtin_convertvector((bits >> 23) - 127, Float4);
+    const Float4 mantissa = reinterpret_cast<Float4>((bits & 0x7FFFFF) | 0x3F800000);
+    return sigma_px < 1.0f ? sigma_px : exponent + mantissa;
+  }
 
  private:
   struct Level {
@@ -57,6 +64,7 @@ class ForwardScatter {
 
   int width_ = 0, height_ = 0, channels_ = 1;
   float px_per_m_ = 0.0f;  // f_px k: sigma in pixels per metre of range
+  float forward_grey_per_m_ = 0.0f;  // b_f of a grey image
   // 1 - exp(-b_f x) per channel (lanes; grey: green's) every kStep_m of range x.
   static constexpr float kStep_m = 0.01f;
   std::vector<Float4> scattered_;

@@ -284,18 +284,22 @@ void ViewRenderer::shadePacket(int v, int u, int count, const SceneHit* hit, con
   scene_->albedo4(hit, origin_, d, px, py, footprint2, albedo);
   float* out = radiance_ + (static_cast<std::size_t>(v) * camera_.width_px + u) * channels_;
   if (deep_sea_) {
-    const Float4 position = effects_.column() ? column_.samplePosition4(distance) : Float4{};
+    const bool column = effects_.column();
+    const Float4 position = column ? column_.samplePosition4(distance) : Float4{};
     for (int i = 0; i < count; ++i, out += channels_) {
       const bool surface = hit[i].primitive != -2;
-      Eigen::Vector4f E = Eigen::Vector4f::Zero(), view = Eigen::Vector4f::Ones();
+      Float4 E{}, view = Float4{} + 1.0f;
       if (surface) {
-        E += lit[0][i] * water_.interpolate(lamp_path[0].row[i], lamp_path[0].fraction[i]);
-        E += lit[1][i] * water_.interpolate(lamp_path[1].row[i], lamp_path[1].fraction[i]);
-        view = water_.interpolate(view_path.row[i], view_path.fraction[i]);
+        E = toFloat4(lit[0][i] * water_.interpolate(lamp_path[0].row[i], lamp_path[0].fraction[i]) +
+                     lit[1][i] * water_.interpolate(lamp_path[1].row[i], lamp_path[1].fraction[i]));
+        view = toFloat4(water_.interpolate(view_path.row[i], view_path.fraction[i]));
       }
+      // Lanes 0-2 the lamps' backscatter up to the hit (or over the whole range in open water), lane 3 the
+      // plumes' transmittance there (1 without plumes).
+      const Float4 col = column ? column_.at(u + i, v, surface ? position[i] : WaterColumn::kLastPosition)
+                                : Float4{0.0f, 0.0f, 0.0f, 1.0f};
       const float cos2 = inv_length[i] * inv_length[i];
-      shadeDeepSea(v, u + i, surface, distance[i], position[i], toFloat4(albedo[i]), toFloat4(E), toFloat4(view),
-                   cos2 * cos2, out);
+      shadeDeepSea(v, u + i, surface, distance[i], col, toFloat4(albedo[i]), E, view, cos2 * cos2, out);
     }
     return;
   }
@@ -319,14 +323,10 @@ void ViewRenderer::shadePacket(int v, int u, int count, const SceneHit* hit, con
   }
 }
 
-void ViewRenderer::shadeDeepSea(int v, int u, bool surface, float distance_m, float column_position, Float4 albedo,
-                                Float4 E, Float4 transmittance, float cos4, float* out) const {
-  // Column: lanes 0-2 the lamps' backscatter up to the hit (or over the whole range in open water), lane 3
-  // the plumes' transmittance there (1 without plumes). All in registers (Float4): building a vector from
-  // lanes stored one by one would stall on store forwarding.
-  const Float4 column = effects_.column()
-                            ? column_.at(u, v, surface ? column_position : WaterColumn::kLastPosition)
-                            : Float4{0.0f, 0.0f, 0.0f, 1.0f};
+void ViewRenderer::shadeDeepSea(int v, int u, bool surface, float distance_m, Float4 column, Float4 albedo, Float4 E,
+                                Float4 transmittance, float cos4, float* out) const {
+  // All in registers (Float4): building a vector from lanes stored one by one would stall on store
+  // forwarding.
   const float plume_t = column[3];
   Float4 direct{};
   Float4 veil = backscatter4_;

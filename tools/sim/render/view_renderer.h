@@ -104,9 +104,9 @@ class ViewRenderer {
   void shadePacket(int v, int u, int count, const SceneHit* hit, const Eigen::Vector3f* d,
                    const Eigen::Vector2f* slope) const;
   // The deep-sea shading of pixel (u, v) (README: deep-sea image formation): the surface term E (lamp
-  // light, already through the water; ignored without a hit) and albedo, the column looked up at the hit's
-  // distance. Writes the radiance and, for the blur, the surface term and distance.
-  void shadeDeepSea(int v, int u, bool hit, float distance_m, float column_position, Float4 albedo, Float4 E,
+  // light, already through the water; ignored without a hit) and albedo, the water column at the hit
+  // (water_column.h). Writes the radiance and, for the blur, the surface term and distance.
+  void shadeDeepSea(int v, int u, bool hit, float distance_m, Float4 column, Float4 albedo, Float4 E,
                     Float4 transmittance, float cos4, float* out) const;
 
   CameraConfig camera_;

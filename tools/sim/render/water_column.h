@@ -52,13 +52,16 @@ class WaterColumn {
   Float4 at(int u, int v, float position) const {
     const int k = static_cast<int>(position);
     const float f = position - static_cast<float>(k);
-    const float wu = static_cast<float>(u & (kStep_px - 1)) * (1.0f / kStep_px);
-    const float wv = static_cast<float>(v & (kStep_px - 1)) * (1.0f / kStep_px);
-    const Float4* p = table_.data() + (static_cast<std::size_t>(v / kStep_px) * nodes_u_ + u / kStep_px) * kSamples + k;
+    const unsigned uu = static_cast<unsigned>(u), vv = static_cast<unsigned>(v);
+    const float wu = static_cast<float>(uu % kStep_px) * (1.0f / kStep_px);
+    const float wv = static_cast<float>(vv % kStep_px) * (1.0f / kStep_px);
+    const Float4* p = table_.data() + (static_cast<std::size_t>(vv / kStep_px) * nodes_u_ + uu / kStep_px) * kSamples + k;
     const std::size_t down = static_cast<std::size_t>(nodes_u_) * kSamples;
-    const auto along = [f](const Float4* q) { return q[0] + f * (q[1] - q[0]); };
-    const Float4 top = along(p) + wu * (along(p + kSamples) - along(p));
-    const Float4 bottom = along(p + down) + wu * (along(p + down + kSamples) - along(p + down));
+    // Along the samples first (4 lerps), then across the grid (3).
+    const Float4 a = p[0] + f * (p[1] - p[0]), b = p[kSamples] + f * (p[kSamples + 1] - p[kSamples]);
+    const Float4 c = p[down] + f * (p[down + 1] - p[down]);
+    const Float4 d = p[down + kSamples] + f * (p[down + kSamples + 1] - p[down + kSamples]);
+    const Float4 top = a + wu * (b - a), bottom = c + wu * (d - c);
     return top + wv * (bottom - top);
   }
   static constexpr float kLastPosition = static_cast<float>(kSamples - 1) - 1e-3f;
