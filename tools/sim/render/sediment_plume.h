@@ -19,7 +19,8 @@ namespace deepnav::sim {
 // scattering with the water's single-scattering albedo (water_column.h).
 class SedimentPlumes {
  public:
-  // R_panel_odom and p_odom_origin_in_panel take the plume centres and the current into P.
+  // T_odom_panel takes the plume centres (on the seabed, at the panel footprint's height) and the current
+  // into P.
   void init(const std::vector<SedimentPlumeConfig>& plumes, const Eigen::Isometry3d& T_odom_panel,
             const std::array<double, 3>& current_in_odom_mps);
   bool empty() const { return plumes_.empty(); }

@@ -27,8 +27,9 @@ namespace deepnav::sim {
 // on a grid of rays every kStep_px pixels (pixel centres (32 i, 32 j)), at kSamples distances
 // s_k = kRange_m (k / (kSamples - 1))^2 (dense near the camera, where the lamps' light is strong), by the
 // trapezoid rule, and looked up per pixel bilinearly in (u, v) and linearly in the sample position. Light
-// scattered beyond kRange_m is left out (less than 2 % of the total in clear water, where the 1 / r^2
-// fall-off alone leaves (0.3 / 20) of the first 0.3 m's share). Lanes 0-2: L_bs (B, G, R); lane 3: T_p.
+// scattered beyond kRange_m is left out: with the 1 / s^2 fall-off of the lamps' light alone (no
+// attenuation, beams overlapping the ray from 0.3 m on) that is 0.3 / 20 = 1.5 % of the total, less in
+// any of the presets' water. Lanes 0-2: L_bs (B, G, R); lane 3: T_p.
 class WaterColumn {
  public:
   static constexpr int kStep_px = 32;
