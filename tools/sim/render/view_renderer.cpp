@@ -323,7 +323,7 @@ void ViewRenderer::shadePacket(int v, int u, int count, const SceneHit* hit, con
   }
 }
 
-void ViewRenderer::shadeDeepSea(int v, int u, bool surface, float distance_m, Float4 column, Float4 albedo, Float4 E,
+inline void ViewRenderer::shadeDeepSea(int v, int u, bool surface, float distance_m, Float4 column, Float4 albedo, Float4 E,
                                 Float4 transmittance, float cos4, float* out) const {
   // All in registers (Float4): building a vector from lanes stored one by one would stall on store
   // forwarding.

@@ -106,7 +106,7 @@ class ViewRenderer {
   // The deep-sea shading of pixel (u, v) (README: deep-sea image formation): the surface term E (lamp
   // light, already through the water; ignored without a hit) and albedo, the water column at the hit
   // (water_column.h). Writes the radiance and, for the blur, the surface term and distance.
-  void shadeDeepSea(int v, int u, bool hit, float distance_m, Float4 column, Float4 albedo, Float4 E,
+  [[gnu::always_inline]] void shadeDeepSea(int v, int u, bool hit, float distance_m, Float4 column, Float4 albedo, Float4 E,
                     Float4 transmittance, float cos4, float* out) const;
 
   CameraConfig camera_;
