@@ -304,6 +304,51 @@ TEST(SimRenderWater, ForwardScatterBlurGrowsWithRange) {
   EXPECT_EQ(radiance, direct);
 }
 
+// FNV-1a over the bytes of the left image, the right image and the left depth map.
+std::uint64_t hashPair(const Pair& p) {
+  std::uint64_t h = 0xcbf29ce484222325ull;
+  const auto add = [&h](const cv::Mat& m) {
+    const auto* bytes = m.ptr<std::uint8_t>();
+    for (std::size_t i = 0; i < m.total() * m.elemSize(); ++i) h = (h ^ bytes[i]) * 0x100000001b3ull;
+  };
+  add(p.frame.left), add(p.frame.right), add(p.truth.depth_m);
+  return h;
+}
+
+TEST(SimRenderWater, DefaultsRenderAsBeforeTheWaterTerms) {
+  // Hashes of renders made by the renderer of c8fce7c (before the deep-sea terms existed): the valves face
+  // from 0.9 m at t = 36 s, in clear water with 6 fish (grey), in murky water with 6 fish (BGR), and in
+  // murky water through a flat acrylic port (BGR). Every water key at its default must leave them as
+  // they were, bit for bit.
+  struct Case {
+    WaterPreset preset;
+    int channels;
+    bool port;
+    std::uint64_t hash;
+  };
+  for (const Case& c : {Case{WaterPreset::kClear, 1, false, 0x56fc0526289b1ecbull},
+                        Case{WaterPreset::kMurky, 3, false, 0x30224b529522050full},
+                        Case{WaterPreset::kMurky, 3, true, 0x9732974611903c04ull}}) {
+    Scenario s;
+    s.water.preset = c.preset;
+    s.water.fish_count = c.port ? 0 : 6;
+    if (c.port) {
+      s.camera.flat_port = true;
+      s.camera.port.pinhole_to_glass_m = 0.008;
+      s.camera.port.glass_thickness_m = 0.012;
+      s.camera.port.n_glass = 1.49;
+    }
+    StereoRenderer r;
+    std::string error;
+    ASSERT_TRUE(r.init(s, 1, c.channels, &error)) << error;
+    Pair p;
+    allocateStereoFrame(p.frame, s.camera.width_px, s.camera.height_px, c.channels);
+    r.allocateTruth(&p.truth);
+    ASSERT_TRUE(r.render(tickFacingFace(s, 0, 0.9, -0.15, 1.3, 0.0, 0.0, 36'000'000), &p.frame, &p.truth));
+    EXPECT_EQ(hashPair(p), c.hash) << waterPresetName(c.preset) << (c.port ? " through the port" : "");
+  }
+}
+
 TEST(SimRenderWater, WaterKeysAreReadAndCheckedWithTheirNames) {
   Scenario s;
   std::string error;
