@@ -1,25 +1,51 @@
 #!/usr/bin/env bash
-# The main job: build deepnav, simulate the default dive (and its clear and murky variants), replay them
-# through the full two-stage pipeline in the paper's test settings, print the paper's tables and write
-# the report (report/index.html).
-#   tools/dive.sh [SEED]
+# The main job: build deepnav, simulate the sea-trial family (tools/sim/scenarios/sea-trial*.yaml: sea-grade
+# sensors with systematic errors the board does not know, deep-sea image formation, a plume, the arm),
+# replay each dive through the full two-stage pipeline in the paper's test settings and as dead
+# reckoning, print the paper's tables over the seeds (mean ± std) and write the report.
+#   tools/dive.sh                     the default matrix (README, "Main job": what it runs and how long)
+#   DIVE_SEEDS="1 2 3" tools/dive.sh  other seeds
+#   DIVE_VARIANTS="moderate murky clear" DIVE_RUNS_ALL=1 tools/dive.sh   the full matrix (README: its time)
+# Outputs: out/tables.md (and .json), out/<variant>-s<seed>/<run>/summary.json, report/index.html. The
+# recordings are deleted once replayed (about 2 GB each), but for out/sea-trial-s<first seed>.mcap (the
+# figures' dive); DIVE_KEEP=1 keeps them all.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
-seed="${1:-1}"
+seeds=(${DIVE_SEEDS:-1 2})
+variants=(${DIVE_VARIANTS:-moderate murky})
 jobs="$(nproc)"
 start_s=$SECONDS
+
+# The paper's runs (README, "Main job"): the board as is is T_L2 (EKF-adaptive).
+declare -A run_args=(
+  [dr]="--set vision.vo_mode=none --set markers.enabled=false"
+  [tl1]="--set vision.vo_mode=none"
+  [tl2]=""
+  [tl3]="--set stage.fuse_markers_in_stage2=false"
+  [all]="--set vision.vo_mode=all"
+)
+# Which runs each variant gets: every run on moderate water; dead reckoning, T_L1 and T_L2 (the turbidity
+# table) on the others, unless DIVE_RUNS_ALL=1. Rendering a 5-minute dive costs about 5 minutes of CPU:
+# this is what fits the 20 minutes on two cores (README, "Main job").
+runs_for() {
+  if [[ "$1" != moderate && "${DIVE_RUNS_ALL:-0}" == 0 ]]; then echo "dr tl1 tl2"; else echo "dr tl1 tl2 tl3 all"; fi
+}
+scenario_of() {
+  if [[ "$1" == moderate ]]; then echo tools/sim/scenarios/sea-trial.yaml; else echo "tools/sim/scenarios/sea-trial-$1.yaml"; fi
+}
 
 echo "== build"
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_TOOLCHAIN_FILE=toolchains/native.cmake >/dev/null
 cmake --build build -j"$jobs" --target deepnav deepnav-sim deepnav-figures
-
+rm -rf out report
 mkdir -p out report
-# Runs "name: command..." jobs, at most $jobs at a time, each logging to out/<name>.log; stops on failure.
+echo "   seeds: ${seeds[*]}; variants: ${variants[*]}"
+
+# Runs "name: command" specs, at most $jobs at a time, each logging to out/<name>.log; stops on failure.
 run_jobs() {
   local pids=() names=()
   for spec in "$@"; do
     local name="${spec%%:*}" cmd="${spec#*:}"
-    echo "   started $name"
     bash -c "$cmd" >"out/$name.log" 2>&1 &
     pids+=($!)
     names+=("$name")
@@ -40,33 +66,69 @@ wait_jobs() {
   done
 }
 
-echo "== simulate the dives (seed $seed): default, clear, murky"
-run_jobs \
-  "sim-default:build/bin/deepnav-sim --scenario tools/sim/scenarios/default.yaml --seed $seed --out out/default.mcap" \
-  "sim-clear:build/bin/deepnav-sim --scenario tools/sim/scenarios/clear.yaml --seed $seed --out out/clear.mcap" \
-  "sim-murky:build/bin/deepnav-sim --scenario tools/sim/scenarios/murky.yaml --seed $seed --out out/murky.mcap"
+# The replays of one recording, then the recording goes (unless it is the figures' dive or DIVE_KEEP=1).
+replay_dive() {
+  local tag="$1" variant="$2" seed="$3" specs=()
+  for run in $(runs_for "$variant"); do
+    local extra=""
+    [[ "$run" == tl2 ]] && extra="--workspace-out out/$tag/tl2/workspace"
+    specs+=("$tag-$run:build/bin/deepnav replay out/$tag.mcap --out out/$tag/$run ${run_args[$run]} $extra")
+  done
+  run_jobs "${specs[@]}"
+  if [[ "$tag" != "sea-trial-s${seeds[0]}" && "${DIVE_KEEP:-0}" == 0 ]]; then rm -f "out/$tag.mcap"; fi
+}
 
-echo "== replay through the two-stage pipeline: T_L2 (adaptive), EKF-all, T_L1, T_L3, clear, murky"
-run_jobs \
-  "tl2:build/bin/deepnav replay out/default.mcap --out out/tl2 --workspace-out out/tl2/workspace" \
-  "all:build/bin/deepnav replay out/default.mcap --out out/all --set vision.vo_mode=all" \
-  "tl1:build/bin/deepnav replay out/default.mcap --out out/tl1 --set vision.vo_mode=none" \
-  "tl3:build/bin/deepnav replay out/default.mcap --out out/tl3 --set stage.fuse_markers_in_stage2=false" \
-  "clear:build/bin/deepnav replay out/clear.mcap --out out/clear" \
-  "murky:build/bin/deepnav replay out/murky.mcap --out out/murky"
+echo "== simulate and replay (a dive is simulated while the previous one is replayed)"
+previous=()
+for variant in "${variants[@]}"; do
+  for seed in "${seeds[@]}"; do
+    tag="$([[ $variant == moderate ]] && echo sea-trial || echo "sea-trial-$variant")-s$seed"
+    echo "   simulating $tag"
+    build/bin/deepnav-sim --scenario "$(scenario_of "$variant")" --board board/sim-sea/board.yaml --seed "$seed" \
+      --no-truth-maps --out "out/$tag.mcap" >"out/sim-$tag.log" 2>&1 &
+    sim_pid=$!
+    if [ "${#previous[@]}" -gt 0 ]; then replay_dive "${previous[@]}"; fi
+    if ! wait "$sim_pid"; then
+      echo "simulating $tag failed; its log:" >&2
+      tail -20 "out/sim-$tag.log" >&2
+      exit 1
+    fi
+    echo "   simulated $tag ($((SECONDS - start_s)) s)"
+    previous=("$tag" "$variant" "$seed")
+  done
+done
+replay_dive "${previous[@]}"
 echo
-cat out/tl2.log | sed -n '2,20p'
+sed -n '2,20p' "out/sea-trial-s${seeds[0]}-tl2.log"
 
-echo "== figures: a stereo pair of the dive, its disparity, cloud planes, the stage-1 octomap"
-build/bin/deepnav-figures out/default.mcap --time-s 56 --workspace out/tl2/workspace --out out/figures
+echo "== figures: a stereo pair of the sea trial, its disparity, cloud planes, the stage-1 octomap"
+build/bin/deepnav-figures "out/sea-trial-s${seeds[0]}.mcap" --time-s 230 \
+  --workspace "out/sea-trial-s${seeds[0]}/tl2/workspace" --out out/figures
 
 echo "== tables"
-/usr/bin/python3 tools/eval/paper_tables.py --run tl1=out/tl1 --run tl2=out/tl2 --run tl3=out/tl3 --run all=out/all \
-  --run modality_clear=out/clear --run modality_default=out/tl2 --run modality_murky=out/murky --json out/tables.json |
-  tee out/tables.md
+# One set of tables per water variant (its runs over the seeds), then the modality table across them.
+{
+  for variant in "${variants[@]}"; do
+    prefix="$([[ $variant == moderate ]] && echo sea-trial || echo "sea-trial-$variant")"
+    echo "### Sea trial, $variant water (seeds ${seeds[*]})"
+    echo
+    args=()
+    for run in $(runs_for "$variant"); do args+=(--run "$run=out/$prefix-s*/$run"); done
+    /usr/bin/python3 tools/eval/paper_tables.py "${args[@]}" --json "out/tables-$variant.json"
+  done
+  echo "### Modality against turbidity (EKF-adaptive, seeds ${seeds[*]})"
+  echo
+  args=()
+  for variant in "${variants[@]}"; do
+    prefix="$([[ $variant == moderate ]] && echo sea-trial || echo "sea-trial-$variant")"
+    args+=(--run "modality_$variant=out/$prefix-s*/tl2")
+  done
+  /usr/bin/python3 tools/eval/paper_tables.py "${args[@]}" --json out/tables-modality.json
+} | tee out/tables.md
 
 echo "== report"
 # Debian's interpreter: it has python3-matplotlib (a pyenv python3 earlier on PATH may not).
-/usr/bin/python3 tools/eval/report.py --run out/tl2 --compare tl1=out/tl1 --compare all=out/all --compare tl3=out/tl3 \
-  --tables out/tables.md --figures out/figures --out report
-echo "report written to report/index.html ($((SECONDS - start_s)) s)"
+s1="out/sea-trial-s${seeds[0]}"
+/usr/bin/python3 tools/eval/report.py --run "$s1/tl2" --compare "dr=$s1/dr" --compare "tl1=$s1/tl1" \
+  --compare "all=$s1/all" --compare "tl3=$s1/tl3" --tables out/tables.md --figures out/figures --out report
+echo "report written to report/index.html ($((SECONDS - start_s)) s); disk: $(du -sh out | cut -f1)"

@@ -2,7 +2,7 @@
 # Soak: dives replayed back to back through the vehicle's threaded runtime for an hour (by default) at 4x
 # real time, with the resident memory and the scheduler's overruns and late ticks (tools/soak/README.md).
 # Usage: tools/soak.sh [--minutes M] [--speed X] [DIVE.mcap...] [other deepnav-soak options]
-# Without a dive it uses out/default.mcap (tools/dive.sh), else simulates a 60 s dive into out/soak-dive.mcap.
+# Without a dive it uses out-default/default.mcap (tools/dive-default.sh), else simulates a 60 s dive into out/soak-dive.mcap.
 # Exit code: 0 memory flat, 1 growth over the limit (1 MiB), 2 a dive could not run.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -20,8 +20,8 @@ for a in "${args[@]}"; do
 done
 [[ $has_minutes == 0 ]] && args=(--minutes 60 "${args[@]}")
 if [[ $has_dive == 0 ]]; then
-  if [[ -f out/default.mcap ]]; then
-    args+=(out/default.mcap)
+  if [[ -f out-default/default.mcap ]]; then
+    args+=(out-default/default.mcap)
   else
     mkdir -p out
     if [[ ! -f out/soak-dive.mcap ]]; then

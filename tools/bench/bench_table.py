@@ -2,7 +2,7 @@
 """One benchmark table: per-stage time per 688x516 stereo pair beside the DexROV paper's figures, the
 EKF's costs, replay speed against real time and peak resident memory.
 
-  tools/bench/bench_table.py [--build build] [--recording out/default.mcap] [--out bench.md]
+  tools/bench/bench_table.py [--build build] [--recording out-default/default.mcap] [--out bench.md]
 
 Runs the Google Benchmark binaries of build/bin (CPU time, one thread), then `deepnav replay` of a
 recording (default: a 30 s simulated dive it writes with deepnav-sim) for the speed against real time and
