@@ -15,31 +15,8 @@ cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_TOOLCHAIN_FILE=t
 cmake --build build -j"$jobs" --target deepnav deepnav-sim deepnav-figures
 
 mkdir -p out-default report-default
-# Runs "name: command..." jobs, at most $jobs at a time, each logging to out-default/<name>.log; stops on failure.
-run_jobs() {
-  local pids=() names=()
-  for spec in "$@"; do
-    local name="${spec%%:*}" cmd="${spec#*:}"
-    echo "   started $name"
-    bash -c "$cmd" >"out-default/$name.log" 2>&1 &
-    pids+=($!)
-    names+=("$name")
-    if [ "${#pids[@]}" -ge "$jobs" ]; then
-      wait_jobs; pids=(); names=()
-    fi
-  done
-  wait_jobs
-}
-wait_jobs() {
-  for i in "${!pids[@]}"; do
-    if ! wait "${pids[$i]}"; then
-      echo "${names[$i]} failed; its log:" >&2
-      tail -20 "out-default/${names[$i]}.log" >&2
-      exit 1
-    fi
-    echo "   done ${names[$i]} ($((SECONDS - start_s)) s)"
-  done
-}
+log_dir=out-default
+source tools/dive_jobs.sh
 
 echo "== simulate the dives (seed $seed): default, clear, murky"
 run_jobs \

@@ -3,15 +3,16 @@
 # sensors with systematic errors the board does not know, deep-sea image formation, a plume, the arm),
 # replay each dive through the full two-stage pipeline in the paper's test settings and as dead
 # reckoning, print the paper's tables over the seeds (mean ± std) and write the report.
-#   tools/dive.sh                     the default matrix (README, "Main job": what it runs and how long)
-#   DIVE_SEEDS="1 2 3" tools/dive.sh  other seeds
-#   DIVE_VARIANTS="moderate murky clear" DIVE_RUNS_ALL=1 tools/dive.sh   the full matrix (README: its time)
-# Outputs: out/tables.md (and .json), out/<variant>-s<seed>/<run>/summary.json, report/index.html. The
-# recordings are deleted once replayed (about 2 GB each), but for out/sea-trial-s<first seed>.mcap (the
-# figures' dive); DIVE_KEEP=1 keeps them all.
+#   tools/dive.sh            the default matrix, sized for 20 minutes on 2 cores (README, "Main job")
+#   DIVE_SEEDS="1 2 3" DIVE_OTHER_SEEDS="1 2 3" DIVE_VARIANTS="moderate murky clear" DIVE_RUNS_ALL=1 tools/dive.sh
+#                            a wider matrix (about 9 minutes of the 2 cores per 5-minute dive with all runs)
+# Outputs: out/tables.md (and out/tables-*.json), out/<dive>/<run>/summary.json, report/index.html. The
+# recordings (about 1.3 GB each) are deleted once replayed, but for out/sea-trial-s<first seed>.mcap
+# (the figures' dive); DIVE_KEEP=1 keeps them all.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
-seeds=(${DIVE_SEEDS:-1 2})
+seeds=(${DIVE_SEEDS:-1 2})               # the moderate sea trial
+other_seeds=(${DIVE_OTHER_SEEDS:-1})     # the other waters
 variants=(${DIVE_VARIANTS:-moderate murky})
 jobs="$(nproc)"
 start_s=$SECONDS
@@ -24,80 +25,74 @@ declare -A run_args=(
   [tl3]="--set stage.fuse_markers_in_stage2=false"
   [all]="--set vision.vo_mode=all"
 )
-# Which runs each variant gets: every run on moderate water; dead reckoning, T_L1 and T_L2 (the turbidity
-# table) on the others, unless DIVE_RUNS_ALL=1. Rendering a 5-minute dive costs about 5 minutes of CPU:
-# this is what fits the 20 minutes on two cores (README, "Main job").
+# Every run on the moderate water; dead reckoning, T_L1 and T_L2 (the turbidity table) on the others,
+# unless DIVE_RUNS_ALL=1. Rendering a 5-minute sea trial costs about 5.5 minutes of one core.
 runs_for() {
   if [[ "$1" != moderate && "${DIVE_RUNS_ALL:-0}" == 0 ]]; then echo "dr tl1 tl2"; else echo "dr tl1 tl2 tl3 all"; fi
 }
-scenario_of() {
-  if [[ "$1" == moderate ]]; then echo tools/sim/scenarios/sea-trial.yaml; else echo "tools/sim/scenarios/sea-trial-$1.yaml"; fi
-}
+prefix_of() { if [[ "$1" == moderate ]]; then echo sea-trial; else echo "sea-trial-$1"; fi; }
+seeds_of() { if [[ "$1" == moderate ]]; then echo "${seeds[*]}"; else echo "${other_seeds[*]}"; fi; }
 
 echo "== build"
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_TOOLCHAIN_FILE=toolchains/native.cmake >/dev/null
 cmake --build build -j"$jobs" --target deepnav deepnav-sim deepnav-figures
 rm -rf out report
 mkdir -p out report
-echo "   seeds: ${seeds[*]}; variants: ${variants[*]}"
+log_dir=out
+start_s=$SECONDS
 
-# Runs "name: command" specs, at most $jobs at a time, each logging to out/<name>.log; stops on failure.
-run_jobs() {
-  local pids=() names=()
-  for spec in "$@"; do
-    local name="${spec%%:*}" cmd="${spec#*:}"
-    bash -c "$cmd" >"out/$name.log" 2>&1 &
-    pids+=($!)
-    names+=("$name")
-    if [ "${#pids[@]}" -ge "$jobs" ]; then
-      wait_jobs; pids=(); names=()
-    fi
-  done
-  wait_jobs
-}
-wait_jobs() {
-  for i in "${!pids[@]}"; do
-    if ! wait "${pids[$i]}"; then
-      echo "${names[$i]} failed; its log:" >&2
-      tail -20 "out/${names[$i]}.log" >&2
+# A pool of "name|after|command" jobs: at most $jobs run at once; a job starts when the job it names in
+# "after" (if any) has finished, the first ready one in the list first. Stops on the first failure.
+run_pool() {
+  local queue=("$@") running=0 pid i name after cmd
+  declare -A finished=() name_of=()
+  while (( ${#queue[@]} > 0 || running > 0 )); do
+    for i in "${!queue[@]}"; do
+      (( running < jobs )) || break
+      IFS='|' read -r name after cmd <<<"${queue[$i]}"
+      [[ -z "$after" || -n "${finished[$after]:-}" ]] || continue
+      bash -c "$cmd" >"$log_dir/$name.log" 2>&1 &
+      name_of[$!]="$name"
+      running=$((running + 1))
+      unset "queue[$i]"
+    done
+    queue=("${queue[@]}")
+    if ! wait -n -p pid; then
+      echo "${name_of[$pid]} failed; its log:" >&2
+      tail -20 "$log_dir/${name_of[$pid]}.log" >&2
       exit 1
     fi
-    echo "   done ${names[$i]} ($((SECONDS - start_s)) s)"
+    finished[${name_of[$pid]}]=1
+    running=$((running - 1))
+    echo "   done ${name_of[$pid]} ($((SECONDS - start_s)) s)"
   done
 }
 
-# The replays of one recording, then the recording goes (unless it is the figures' dive or DIVE_KEEP=1).
-replay_dive() {
-  local tag="$1" variant="$2" seed="$3" specs=()
-  for run in $(runs_for "$variant"); do
-    local extra=""
-    [[ "$run" == tl2 ]] && extra="--workspace-out out/$tag/tl2/workspace"
-    specs+=("$tag-$run:build/bin/deepnav replay out/$tag.mcap --out out/$tag/$run ${run_args[$run]} $extra")
-  done
-  run_jobs "${specs[@]}"
-  if [[ "$tag" != "sea-trial-s${seeds[0]}" && "${DIVE_KEEP:-0}" == 0 ]]; then rm -f "out/$tag.mcap"; fi
-}
-
-echo "== simulate and replay (a dive is simulated while the previous one is replayed)"
-previous=()
+dives=()
 for variant in "${variants[@]}"; do
-  for seed in "${seeds[@]}"; do
-    tag="$([[ $variant == moderate ]] && echo sea-trial || echo "sea-trial-$variant")-s$seed"
-    echo "   simulating $tag"
-    build/bin/deepnav-sim --scenario "$(scenario_of "$variant")" --board board/sim-sea/board.yaml --seed "$seed" \
-      --no-truth-maps --out "out/$tag.mcap" >"out/sim-$tag.log" 2>&1 &
-    sim_pid=$!
-    if [ "${#previous[@]}" -gt 0 ]; then replay_dive "${previous[@]}"; fi
-    if ! wait "$sim_pid"; then
-      echo "simulating $tag failed; its log:" >&2
-      tail -20 "out/sim-$tag.log" >&2
-      exit 1
-    fi
-    echo "   simulated $tag ($((SECONDS - start_s)) s)"
-    previous=("$tag" "$variant" "$seed")
+  for seed in $(seeds_of "$variant"); do dives+=("$variant:$seed"); done
+done
+echo "== simulate ${#dives[@]} dives (moderate seeds ${seeds[*]}; other waters ${other_seeds[*]}) and replay each as"
+echo "   dead reckoning and the paper's runs, $jobs jobs at a time (a dive's replays start once it is simulated)"
+specs=()
+for d in "${dives[@]}"; do
+  variant="${d%%:*}" seed="${d#*:}" tag="$(prefix_of "${d%%:*}")-s${d#*:}"
+  specs+=("sim-$tag||build/bin/deepnav-sim --scenario tools/sim/scenarios/$(prefix_of "$variant").yaml \
+--board board/sim-sea/board.yaml --seed $seed --no-truth-maps --out out/$tag.mcap")
+done
+for d in "${dives[@]}"; do
+  variant="${d%%:*}" tag="$(prefix_of "${d%%:*}")-s${d#*:}"
+  for run in $(runs_for "$variant"); do
+    extra=""
+    [[ "$run" == tl2 ]] && extra="--workspace-out out/$tag/tl2/workspace"
+    specs+=("$tag-$run|sim-$tag|build/bin/deepnav replay out/$tag.mcap --out out/$tag/$run ${run_args[$run]} $extra")
   done
 done
-replay_dive "${previous[@]}"
+run_pool "${specs[@]}"
+for d in "${dives[@]}"; do
+  tag="$(prefix_of "${d%%:*}")-s${d#*:}"
+  if [[ "$tag" != "sea-trial-s${seeds[0]}" && "${DIVE_KEEP:-0}" == 0 ]]; then rm -f "out/$tag.mcap"; fi
+done
 echo
 sed -n '2,20p' "out/sea-trial-s${seeds[0]}-tl2.log"
 
@@ -106,23 +101,20 @@ build/bin/deepnav-figures "out/sea-trial-s${seeds[0]}.mcap" --time-s 230 \
   --workspace "out/sea-trial-s${seeds[0]}/tl2/workspace" --out out/figures
 
 echo "== tables"
-# One set of tables per water variant (its runs over the seeds), then the modality table across them.
+# One set of tables per water (its runs over its seeds), then the modality table across the waters.
 {
   for variant in "${variants[@]}"; do
-    prefix="$([[ $variant == moderate ]] && echo sea-trial || echo "sea-trial-$variant")"
-    echo "### Sea trial, $variant water (seeds ${seeds[*]})"
+    prefix="$(prefix_of "$variant")"
+    echo "### Sea trial, $variant water (seeds $(seeds_of "$variant"))"
     echo
     args=()
     for run in $(runs_for "$variant"); do args+=(--run "$run=out/$prefix-s*/$run"); done
     /usr/bin/python3 tools/eval/paper_tables.py "${args[@]}" --json "out/tables-$variant.json"
   done
-  echo "### Modality against turbidity (EKF-adaptive, seeds ${seeds[*]})"
+  echo "### Modality against turbidity (EKF-adaptive)"
   echo
   args=()
-  for variant in "${variants[@]}"; do
-    prefix="$([[ $variant == moderate ]] && echo sea-trial || echo "sea-trial-$variant")"
-    args+=(--run "modality_$variant=out/$prefix-s*/tl2")
-  done
+  for variant in "${variants[@]}"; do args+=(--run "modality_$variant=out/$(prefix_of "$variant")-s*/tl2"); done
   /usr/bin/python3 tools/eval/paper_tables.py "${args[@]}" --json out/tables-modality.json
 } | tee out/tables.md
 
@@ -131,4 +123,4 @@ echo "== report"
 s1="out/sea-trial-s${seeds[0]}"
 /usr/bin/python3 tools/eval/report.py --run "$s1/tl2" --compare "dr=$s1/dr" --compare "tl1=$s1/tl1" \
   --compare "all=$s1/all" --compare "tl3=$s1/tl3" --tables out/tables.md --figures out/figures --out report
-echo "report written to report/index.html ($((SECONDS - start_s)) s); disk: $(du -sh out | cut -f1)"
+echo "report written to report/index.html ($((SECONDS - start_s)) s after the build); disk: $(du -sh out | cut -f1)"

@@ -11,7 +11,8 @@ namespace deepnav {
 // The instant a stereo pair is exposed, with the true pose of each camera's optical frame (z forward,
 // x right, y down) in the odometry frame. The renderer draws the pair from these poses.
 struct CameraTick {
-  TimeUs t_us = 0;
+  TimeUs t_us = 0;           // the pair's stamp (the camera clock's, shifted by `timing.camera`)
+  TimeUs exposure_t_us = 0;  // the true instant of the exposure, at which the poses below are taken
   std::uint32_t frame_index = 0;
   Eigen::Vector3d p_left_cam_in_odom_m = Eigen::Vector3d::Zero();
   Eigen::Quaterniond q_odom_left_cam = Eigen::Quaterniond::Identity();

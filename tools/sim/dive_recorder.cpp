@@ -66,7 +66,9 @@ struct FrameRecorder {
     if (tick.corrupted) corruptStereoFrame(seed, tick.frame_index, &frame);
     frame.exposure_us = 4000;
     writer->recordFrame(frame, -1);
-    const KinematicState robot = sim.truthAt(tick.t_us);
+    // The robot's pose at the exposure, as the tick's camera poses (the stamp carries the camera's clock
+    // offset and latency, timing.camera).
+    const KinematicState robot = sim.truthAt(tick.exposure_t_us);
     truth.t_us = tick.t_us;
     truth.sequence = frame.sequence;
     truth.p_robot_in_odom_m = robot.p_robot_in_odom_m - scene_to_odom_m;

@@ -27,6 +27,7 @@ CameraTick tickFacingFace(const Scenario& scenario, int face, double distance_m,
   const Eigen::Isometry3d T_odom_panel = panelPoseInOdom(scenario);
   CameraTick tick;
   tick.t_us = t_us;
+  tick.exposure_t_us = t_us;
   tick.q_odom_left_cam = Eigen::Quaterniond(T_odom_panel.linear() * R_panel_cam);
   tick.q_odom_right_cam = tick.q_odom_left_cam;
   tick.p_left_cam_in_odom_m = T_odom_panel * p_left_in_panel;

@@ -50,6 +50,7 @@ Eigen::Vector3d CameraRig::p_right_cam_in_robot_m() const {
 CameraTick CameraRig::tick(const KinematicState& truth, TimeUs t_us, std::uint32_t frame_index) const {
   CameraTick c;
   c.t_us = t_us;
+  c.exposure_t_us = t_us;  // the stamp may be shifted later (SensorSimulator, timing.camera); this is not
   c.frame_index = frame_index;
   const Eigen::Quaterniond q_robot_cam(R_robot_cam_);
   c.q_odom_left_cam = (truth.q_odom_robot * q_robot_cam).normalized();
