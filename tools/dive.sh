@@ -25,10 +25,11 @@ declare -A run_args=(
   [tl3]="--set stage.fuse_markers_in_stage2=false"
   [all]="--set vision.vo_mode=all"
 )
-# Every run on the moderate water; dead reckoning, T_L1 and T_L2 (the turbidity table) on the others,
-# unless DIVE_RUNS_ALL=1. Rendering a 5-minute sea trial costs about 5.5 minutes of one core.
+# Every run on the moderate water; dead reckoning and T_L2 (the turbidity table) on the others, unless
+# DIVE_RUNS_ALL=1. Longest first (EKF-all runs both VO on every pair), so the pool's tail is short.
+# Rendering a 5-minute sea trial costs about 5.5 minutes of one core.
 runs_for() {
-  if [[ "$1" != moderate && "${DIVE_RUNS_ALL:-0}" == 0 ]]; then echo "dr tl1 tl2"; else echo "dr tl1 tl2 tl3 all"; fi
+  if [[ "$1" != moderate && "${DIVE_RUNS_ALL:-0}" == 0 ]]; then echo "tl2 dr"; else echo "all tl2 tl3 tl1 dr"; fi
 }
 prefix_of() { if [[ "$1" == moderate ]]; then echo sea-trial; else echo "sea-trial-$1"; fi; }
 seeds_of() { if [[ "$1" == moderate ]]; then echo "${seeds[*]}"; else echo "${other_seeds[*]}"; fi; }
