@@ -24,6 +24,8 @@ std::string summaryJson(double odom_pos_m, const std::string& panel_error, doubl
     << ", \"mean\": 3.0}, \"heading\": {\"in_band_fraction\": 0.9, \"mean\": 1.0}},\n"
     << " \"smoothness_m_a\": 0.99, \"stage2_at_s\": -1, \"vo\": {\"accepted\": 0, \"accepted_orb\": 0, "
     << "\"accepted_planes\": 0},\n \"markers\": {\"poses_accepted\": " << markers_fused << "},\n"
+    << " \"dive_s\": 100.0, \"loop\": {\"tasks\": [{\"name\": \"nav\", \"runs\": 10000, \"mean_us\": 5.0}, "
+    << "{\"name\": \"vision\", \"runs\": 1000, \"mean_us\": " << 200.0 * markers_fused << "}]},\n"
     << " \"modalities\": {\"dvl\": {\"offered\": 100, \"fused\": 90, \"rejected_gate\": 6, \"rejected_other\": 4}}}\n";
   return o.str();
 }
@@ -83,6 +85,8 @@ TEST(PaperTables, AggregatesSeedsAsMeanAndSampleStd) {
       lineWith(r.out, "T_L2", "| 2 | 0.200 ± 0.141 | 2.00 ± 1.41 | 0.030 ± 0.014 | 0.60 ± 0.14 |");
   EXPECT_FALSE(tl2.empty()) << r.out;
   EXPECT_NE(tl2.find("| 110 |"), std::string::npos) << tl2;
+  // AND the vision worker's CPU over the dive (1000 runs of 20 and 24 ms in 100 s: 20 and 24 % of a core)
+  EXPECT_NE(tl2.find("| 22 ± 3 |"), std::string::npos) << tl2;
   // AND the drift and consistency table: ATE half the odom error, NEES in-band share 0.60 ± 0.14
   EXPECT_FALSE(lineWith(r.out, "dead reckoning", "| 1.000 ± 0.707 | 0.50 ± 0.00 | 1.50 ± 0.00 | 0.250 ± 0.000 | "
                                                  "0.60 ± 0.14 |").empty())

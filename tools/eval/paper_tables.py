@@ -82,6 +82,7 @@ def run_metrics(summary):
         "vo_planes": get(summary, "vo", "accepted_planes"),
         "markers_fused": get(summary, "markers", "poses_accepted"),
         "stage2_at_s": summary.get("stage2_at_s") if summary.get("stage2_at_s", -1) >= 0 else None,
+        "vision_cpu_percent": vision_cpu_percent(summary),
     }
     if get(summary, "rpe", "pairs") == 0:
         m["rpe_percent"] = m["rpe_deg_per_m"] = None
@@ -89,6 +90,15 @@ def run_metrics(summary):
         for field in ("offered", "fused", "rejected_gate", "rejected_other"):
             m[f"mod_{name}_{field}"] = get(summary, "modalities", name, field)
     return m
+
+
+def vision_cpu_percent(summary):
+    """The vision worker's busy time over the dive, in % of one core (loop task "vision": runs x mean)."""
+    dive_s = summary.get("dive_s")
+    for task in get(summary, "loop", "tasks") or []:
+        if task.get("name") == "vision" and dive_s:
+            return 100.0 * task["runs"] * task["mean_us"] / 1e6 / dive_s
+    return None
 
 
 def aggregate(per_run):
@@ -164,13 +174,15 @@ def accuracy_lines(title, rows):
     out = [title, "",
            "| run | seeds | odom position (m) | odom orientation (deg) | panel-relative position (m) | "
            "panel-relative orientation (deg) | panel-relative, stage 2 (m / deg) | m_A | VO fused (orb / planes) | "
-           "marker poses fused | stage 2 from (s) |", "|---|---|---|---|---|---|---|---|---|---|---|"]
+           "marker poses fused | stage 2 from (s) | vision CPU (% of a core) |",
+           "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         out.append(f"| {r['name']} | {r['seeds']} | {fmt(r['odom_pos_m'], 3)} | {fmt(r['odom_ori_deg'], 2)} | "
                    f"{fmt(r['panel_pos_m'], 3)} | {fmt(r['panel_ori_deg'], 2)} | "
                    f"{fmt_pair(r['panel_pos_stage2_m'], r['panel_ori_stage2_deg'], 3, 2)} | {fmt(r['m_a'], 3)} | "
                    f"{count(r['vo_fused'])} ({count(r['vo_orb'])} / {count(r['vo_planes'])}) | "
-                   f"{count(r['markers_fused'])} | {fmt(r['stage2_at_s'], 1)} |")
+                   f"{count(r['markers_fused'])} | {fmt(r['stage2_at_s'], 1)} | "
+                   f"{fmt(r['vision_cpu_percent'], 0)} |")
     return out + [""]
 
 
