@@ -4,15 +4,17 @@
 # replay each dive through the full two-stage pipeline in the paper's test settings and as dead
 # reckoning, print the paper's tables over the seeds (mean ± std) and write the report.
 #   tools/dive.sh            the default matrix, sized for 20 minutes on 2 cores (README, "Main job")
-#   DIVE_SEEDS="1 2 3" DIVE_OTHER_SEEDS="1 2 3" DIVE_VARIANTS="moderate murky clear" DIVE_RUNS_ALL=1 tools/dive.sh
+#   DIVE_SEEDS="3 4 5" DIVE_OTHER_SEEDS="3 4 5" DIVE_VARIANTS="moderate murky clear" DIVE_RUNS_ALL=1 tools/dive.sh
 #                            a wider matrix (about 9 minutes of the 2 cores per 5-minute dive with all runs)
 # Outputs: out/tables.md (and out/tables-*.json), out/<dive>/<run>/summary.json, report/index.html. The
 # recordings (about 1.3 GB each) are deleted once replayed, but for out/sea-trial-s<first seed>.mcap
 # (the figures' dive); DIVE_KEEP=1 keeps them all.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
-seeds=(${DIVE_SEEDS:-1 2})               # the moderate sea trial
-other_seeds=(${DIVE_OTHER_SEEDS:-1})     # the other waters
+# Seeds 1 and 2 are the development seeds (what the estimator was tuned and debugged on); the tables
+# come from seeds it never saw.
+seeds=(${DIVE_SEEDS:-3 4})               # the moderate sea trial
+other_seeds=(${DIVE_OTHER_SEEDS:-3})     # the other waters
 variants=(${DIVE_VARIANTS:-moderate murky})
 jobs="$(nproc)"
 start_s=$SECONDS

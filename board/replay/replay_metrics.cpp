@@ -36,15 +36,27 @@ StampedPose inFrame(const Eigen::Isometry3d& T_odom_frame, const StampedPose& p)
   return out;
 }
 
-// Pairs of associated poses, all of them and those of stage 2.
+// Pairs of associated poses: all of them, those of stage 2, those of its first kStage2WindowS.
 struct Pairs {
-  std::vector<StampedPose> est, truth, est2, truth2;
+  std::vector<StampedPose> est, truth, est2, truth2, est_window, truth_window;
+
+  void add(const StampedPose& e, const StampedPose& t, bool stage2, bool in_window) {
+    est.push_back(e);
+    truth.push_back(t);
+    if (!stage2) return;
+    est2.push_back(e);
+    truth2.push_back(t);
+    if (!in_window) return;
+    est_window.push_back(e);
+    truth_window.push_back(t);
+  }
 };
 
 FrameErrors frameErrors(const Pairs& p) {
   FrameErrors f;
   f.whole = trajectoryErrors(p.est, p.truth);
   if (!p.est2.empty()) f.stage2 = trajectoryErrors(p.est2, p.truth2);
+  if (!p.est_window.empty()) f.stage2_window = trajectoryErrors(p.est_window, p.truth_window);
   return f;
 }
 
@@ -102,25 +114,18 @@ ReplayMetrics computeMetrics(const std::vector<StampedPose>& estimate, const std
   ReplayMetrics m;
   Pairs odom, panel;
   bool any_panel_estimate = false;
+  double stage2_from_s = -1.0;
   for (std::size_t k = 0; k < estimate.size() && k < ticks.size(); ++k) {
     const std::optional<StampedPose> t = interpolatePose(truth, estimate[k].t_s, kMaxTruthGapS);
     if (!t) continue;
     const bool stage2 = ticks[k].stage == NavStage::kOptimised;
-    odom.est.push_back(estimate[k]);
-    odom.truth.push_back(*t);
-    if (stage2) {
-      odom.est2.push_back(estimate[k]);
-      odom.truth2.push_back(*t);
-    }
+    if (stage2 && stage2_from_s < 0.0) stage2_from_s = estimate[k].t_s;
+    const bool in_window = stage2 && estimate[k].t_s < stage2_from_s + kStage2WindowS;
+    odom.add(estimate[k], *t, stage2, in_window);
     if (!ticks[k].panel_fixed) continue;
     any_panel_estimate = true;
     if (!truth_T_odom_panel) continue;
-    panel.est.push_back(inFrame(ticks[k].T_odom_panel, estimate[k]));
-    panel.truth.push_back(inFrame(*truth_T_odom_panel, *t));
-    if (stage2) {
-      panel.est2.push_back(panel.est.back());
-      panel.truth2.push_back(panel.truth.back());
-    }
+    panel.add(inFrame(ticks[k].T_odom_panel, estimate[k]), inFrame(*truth_T_odom_panel, *t), stage2, in_window);
   }
   m.odom = frameErrors(odom);
   if (!any_panel_estimate) {

@@ -57,11 +57,16 @@ inline constexpr const char* kTruthPanelMetadata = "deepnav.sim";
 std::optional<Eigen::Isometry3d> truthPanelFromMetadata(const std::map<std::string, std::string>* record,
                                                         std::string* error);
 
-// Errors of one frame (odometry or panel) over the whole dive and over stage 2 (nullopt: no tick there).
+// Errors of one frame (odometry or panel) over the whole dive, over stage 2 and over the first
+// kStage2WindowS of stage 2 (nullopt: no tick there). Without markers in stage 2 (T_L3) that window is a
+// marker-less stretch of visual odometry of a stated length, comparable between runs and dives.
 struct FrameErrors {
   TrajectoryErrors whole;
   std::optional<TrajectoryErrors> stage2;
+  std::optional<TrajectoryErrors> stage2_window;
 };
+
+inline constexpr double kStage2WindowS = 60.0;
 
 struct ReplayMetrics {
   FrameErrors odom;                        // published pose against the truth, unaligned

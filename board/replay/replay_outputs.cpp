@@ -79,10 +79,15 @@ std::string frameErrorsJson(const TrajectoryErrors& e) {
          statsJson(e.orientation, 180.0 / M_PI) + "}";
 }
 
-// {"whole": {...}, "stage2": {...} or null}
+std::string optionalErrorsJson(const std::optional<TrajectoryErrors>& e) {
+  return e ? frameErrorsJson(*e) : std::string("null");
+}
+
+// {"whole": {...}, "stage2": {...} or null, "stage2_first_60s": {...} or null}
 std::string wholeAndStage2Json(const FrameErrors& f) {
-  return "{\"whole\": " + frameErrorsJson(f.whole) +
-         ", \"stage2\": " + (f.stage2 ? frameErrorsJson(*f.stage2) : std::string("null")) + "}";
+  return "{\"whole\": " + frameErrorsJson(f.whole) + ", \"stage2\": " + optionalErrorsJson(f.stage2) +
+         ", \"stage2_first_" + std::to_string(static_cast<int>(kStage2WindowS)) +
+         "s\": " + optionalErrorsJson(f.stage2_window) + "}";
 }
 
 std::string ateJson(const AlignedTrajectoryErrors& a) {

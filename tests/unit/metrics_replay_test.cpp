@@ -77,6 +77,36 @@ TEST(MetricsReplay, ACommonShiftIsAnOdomErrorButNoPanelRelativeError) {
   EXPECT_NEAR(m.nees_heading_summary.mean, 0.0, 1e-9);
 }
 
+TEST(MetricsReplay, TheStage2WindowIsItsFirstSixtySeconds) {
+  // GIVEN 100 s at 10 Hz, stage 2 from t = 10 s, an exact panel, and an estimate exact until t = 70 s
+  // then 1 m off
+  std::vector<StampedPose> estimate, truth;
+  std::vector<ReplayTick> ticks;
+  for (int k = 0; k < 1000; ++k) {
+    StampedPose p;
+    p.t_s = 0.1 * k;
+    p.p_robot_in_odom_m = Eigen::Vector3d(0.01 * k, 0.0, -998.5);
+    truth.push_back(p);
+    StampedPose e = p;
+    if (p.t_s >= 70.0 - 1e-9) e.p_robot_in_odom_m.y() += 1.0;
+    estimate.push_back(e);
+    ReplayTick r;
+    r.stage = p.t_s >= 10.0 - 1e-9 ? NavStage::kOptimised : NavStage::kWorkspace;
+    r.panel_fixed = true;
+    r.T_odom_panel = truePanel();
+    r.filter_t_s = p.t_s;
+    ticks.push_back(r);
+  }
+  const ReplayMetrics m = computeMetrics(estimate, ticks, truth, truePanel());
+  // THEN the window holds the 600 ticks of 10 s <= t < 70 s, all exact, in both frames; stage 2 as a whole
+  // has the 300 ticks 1 m off among its 900
+  ASSERT_TRUE(m.panel && m.panel->stage2_window && m.odom.stage2_window);
+  EXPECT_EQ(m.panel->stage2_window->position.count, 600u);
+  EXPECT_LT(m.panel->stage2_window->position.max, 1e-9);
+  EXPECT_EQ(m.odom.stage2_window->position.count, 600u);
+  EXPECT_NEAR(m.panel->stage2->position.mean, 300.0 / 900.0, 1e-9);
+}
+
 TEST(MetricsReplay, AnExactPanelTurnsTheRobotErrorIntoAPanelRelativeError) {
   // GIVEN the same drifted robot but the true panel pose on the board THEN the panel-relative position
   // error is the 0.3 m (rotations do not change its size)

@@ -64,6 +64,9 @@ def run_metrics(summary):
         "odom_pos_m": get(summary, "position_error_m", "mean"),
         "odom_ori_deg": get(summary, "orientation_error_deg", "mean"),
         "odom_pos_stage2_m": get(summary, "odom_error", "stage2", "position_m", "mean"),
+        "odom_ori_stage2_deg": get(summary, "odom_error", "stage2", "orientation_deg", "mean"),
+        "panel_pos_window_m": get(summary, "panel_error", "stage2_first_60s", "position_m", "mean"),
+        "panel_ori_window_deg": get(summary, "panel_error", "stage2_first_60s", "orientation_deg", "mean"),
         "panel_pos_m": get(summary, "panel_error", "whole", "position_m", "mean"),
         "panel_ori_deg": get(summary, "panel_error", "whole", "orientation_deg", "mean"),
         "panel_pos_stage2_m": get(summary, "panel_error", "stage2", "position_m", "mean"),
@@ -173,13 +176,16 @@ def fmt_pair(a, b, digits_a, digits_b):
 def accuracy_lines(title, rows):
     out = [title, "",
            "| run | seeds | odom position (m) | odom orientation (deg) | panel-relative position (m) | "
-           "panel-relative orientation (deg) | panel-relative, stage 2 (m / deg) | m_A | VO fused (orb / planes) | "
+           "panel-relative orientation (deg) | odom, stage 2 (m / deg) | panel-relative, stage 2 (m / deg) | "
+           "panel-relative, first 60 s of stage 2 (m / deg) | m_A | VO fused (orb / planes) | "
            "marker poses fused | stage 2 from (s) | vision CPU (% of a core) |",
-           "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+           "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         out.append(f"| {r['name']} | {r['seeds']} | {fmt(r['odom_pos_m'], 3)} | {fmt(r['odom_ori_deg'], 2)} | "
                    f"{fmt(r['panel_pos_m'], 3)} | {fmt(r['panel_ori_deg'], 2)} | "
-                   f"{fmt_pair(r['panel_pos_stage2_m'], r['panel_ori_stage2_deg'], 3, 2)} | {fmt(r['m_a'], 3)} | "
+                   f"{fmt_pair(r['odom_pos_stage2_m'], r['odom_ori_stage2_deg'], 3, 2)} | "
+                   f"{fmt_pair(r['panel_pos_stage2_m'], r['panel_ori_stage2_deg'], 3, 2)} | "
+                   f"{fmt_pair(r['panel_pos_window_m'], r['panel_ori_window_deg'], 3, 2)} | {fmt(r['m_a'], 3)} | "
                    f"{count(r['vo_fused'])} ({count(r['vo_orb'])} / {count(r['vo_planes'])}) | "
                    f"{count(r['markers_fused'])} | {fmt(r['stage2_at_s'], 1)} | "
                    f"{fmt(r['vision_cpu_percent'], 0)} |")
