@@ -141,6 +141,13 @@ const std::array kBoardParams = {
       "the marker chain: detection, panel pose, marker robot poses (false: none of them, the panel is never "
       "fixed and the run stays in stage 1; with vision.vo_mode=none the dead-reckoning run)",
       DEEPNAV_FIELD(markers.enabled)},
+    P{"markers.panel_in_filter", ParamType::kBool, "-", 0, 0, "false", "",
+      "hold the fixed panel in the EKF: the robot pose at the fix is cloned into the state for good and every "
+      "marker is fused as a pose relative to that clone, so the panel's error in odom (the robot's error when "
+      "it was measured) stays in the covariance and the compass, DVL and VO refine it (nav/pipeline/panel_anchor.h); "
+      "takes one of the EKF's clones from the visual odometry. false: marker poses are fused in odom as if the "
+      "panel were exact",
+      DEEPNAV_FIELD(markers.panel_in_filter)},
     P{"markers.panel_file", ParamType::kString, "path", 0, 0, "''", "",
       "panel description (knowledge base), relative to the board file; empty: no markers",
       DEEPNAV_FIELD(markers.panel_file)},

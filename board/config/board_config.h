@@ -65,6 +65,7 @@ struct BoardConfig {
   } camera;
   struct Markers {
     bool enabled;               // false: no marker detection, no panel pose, no marker pose fused
+    bool panel_in_filter;       // the fixed panel as a clone in the EKF (nav/pipeline/panel_anchor.h)
     std::string panel_file;     // panel description (knowledge base); empty: no markers
     int panel_min_observations;
     int panel_min_distinct_markers;

@@ -39,15 +39,25 @@ bool NavCore::init(const VehicleSetup& setup, RecordSink* sink, std::string* err
   workspace_restored_ = false;
   const BoardConfig& c = setup.config;
   fuse_markers_in_stage2_ = c.stage.fuse_markers_in_stage2;
-  // As many pair clones as the EKF holds: when full, the oldest is released before the new pair is cloned.
-  vo_.init(robotFromCamera(setup), c.ekf.max_clones);
+  // As many pair clones as the EKF holds (less the panel's anchor when the filter holds the panel): when
+  // full, the oldest is released before the new pair is cloned.
+  const bool panel_in_filter = has_panel_ && c.markers.panel_in_filter;
+  if (panel_in_filter && c.ekf.max_clones < 2) {
+    if (error) *error = "markers.panel_in_filter: needs an EKF with at least 2 clones (one for the panel)";
+    return false;
+  }
+  vo_.init(robotFromCamera(setup), c.ekf.max_clones - (panel_in_filter ? 1 : 0));
   smoother_.init(c.loop.output_tau_s);
   StageConfig stage;
   stage.min_workspace_time_s = c.stage.min_workspace_time_s;
   stage.min_faces_seen_fraction = c.stage.min_faces_seen_fraction;
   if (!stage_.init(stage, error) || !ekf_.init(c.ekf, error)) return false;
-  return !has_panel_ || markers_.init(setup.panel, robotFromCamera(setup), panelPoseConfig(c),
-                                      markerCovarianceConfig(c), error);
+  if (!has_panel_) return true;
+  if (!markers_.init(setup.panel, robotFromCamera(setup), panelPoseConfig(c), markerCovarianceConfig(c), error)) {
+    return false;
+  }
+  markers_.holdPanelInFilter(panel_in_filter);
+  return true;
 }
 
 void NavCore::count(FuseResult r) {
@@ -120,7 +130,7 @@ const NavSolution& NavCore::tick(TimeUs t_us) {
   feedback_.q_odom_robot = solution_.q_odom_robot;
   feedback_.stage = solution_.stage;
   feedback_.panel_fixed = in.panel_fixed;
-  if (in.panel_fixed) feedback_.T_odom_panel = markers_.panelEstimator().estimate().T_odom_panel();
+  if (in.panel_fixed) feedback_.T_odom_panel = markers_.panelInOdom(ekf_);
   smoother_.apply(&solution_);  // after the feedback: the vision worker and markers use the EKF's pose
   if (sink_) sink_->recordSolution(solution_);
   return solution_;

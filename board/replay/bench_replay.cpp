@@ -363,7 +363,8 @@ bool runBenchReplay(const ReplayOptions& o, ReplaySummary* summary, std::string*
     const auto& estimator = run->core.markers().panelEstimator();
     if (!estimator.fixed() || run->vision.workspace().voxels() == 0) {
       summary->warnings.push_back("workspace not saved: the panel was never fixed or the map is empty");
-    } else if (!saveWorkspace(o.workspace_out, run->vision.workspace(), estimator.estimate().T_odom_panel(), &ws_error)) {
+    } else if (!saveWorkspace(o.workspace_out, run->vision.workspace(),
+                              run->core.markers().panelInOdom(run->core.ekf()), &ws_error)) {
       summary->warnings.push_back(ws_error);
     }
   }

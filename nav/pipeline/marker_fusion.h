@@ -9,6 +9,7 @@
 #include "nav/markers/panel_description.h"
 #include "nav/markers/panel_pose_config.h"
 #include "nav/markers/panel_pose_estimator.h"
+#include "nav/pipeline/panel_anchor.h"
 #include "nav/pipeline/pose_history.h"
 #include "nav/types/vision_result.h"
 
@@ -37,6 +38,13 @@ class MarkerFusion {
   // paper's T_L3 test, stage 2 without markers).
   void onVision(const VisionResult& v, const PoseHistory& poses, Ekf* ekf, bool fuse_robot_pose = true);
 
+  // Once the panel is fixed, fuse the markers against a clone of the robot pose at the fix instead of as
+  // poses in odom (panel_anchor.h). Set after init(), before the first vision result.
+  void holdPanelInFilter(bool on) { hold_panel_in_filter_ = on; }
+  // The panel in odom: through the anchor clone when the filter holds the panel, else the fixed estimate.
+  Eigen::Isometry3d panelInOdom(const Ekf& ekf) const;
+  const PanelAnchor& anchor() const { return anchor_; }
+
   bool panelFixed() const { return estimator_.fixed(); }
   const PanelPoseEstimator& panelEstimator() const { return estimator_; }
   PanelPoseEstimator& panelEstimator() { return estimator_; }
@@ -46,6 +54,7 @@ class MarkerFusion {
 
  private:
   void fuseMarker(TimeUs t_us, const MarkerObservation& obs, const PanelMarker& marker, Ekf* ekf);
+  void fuseMarkerAgainstAnchor(TimeUs t_us, const MarkerObservation& obs, const PanelMarker& marker, Ekf* ekf);
 
   PanelDescription panel_;
   Eigen::Isometry3d T_robot_cam_ = Eigen::Isometry3d::Identity();
@@ -53,6 +62,8 @@ class MarkerFusion {
   PanelPoseEstimator estimator_;
   MarkerFusionCounters counters_;
   std::uint32_t faces_seen_mask_ = 0;
+  bool hold_panel_in_filter_ = false;
+  PanelAnchor anchor_;
 };
 
 }  // namespace deepnav
