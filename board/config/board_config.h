@@ -89,6 +89,7 @@ struct BoardConfig {
     bool planes_when_orb_lost;    // adaptive: plane VO for a pair the ORB VO could not track
     int orb_max_tracked;          // tracked ORB count scoring 1 in m_I
     int orb_reset_after_lost_frames;  // new ORB map after this many lost pairs (0: never)
+    bool orb_motion_prior;        // ORB inliers arbitrated by the navigation's predicted motion
     std::string dense_method;     // elas | sgbm | sgbm-wls
     int dense_scale_down;         // 1 or 2
     int dense_disparities;        // at the reduced size
@@ -96,6 +97,8 @@ struct BoardConfig {
     double map_min_kept_fraction; // below it the view is outside the map: filter skipped
     double planes_covariance_scale;  // multiplies the plane registration covariance
     bool planes_partial;          // single-plane (2-axis) registrations become measurements
+    bool planes_subspace;         // degenerate plane sets give the directions they constrain
+    double planes_independent_points;  // cap on the independent stereo cells per plane (0: all)
     double map_resolution_m;
     double map_filter_distance_m;
     int map_every_n_frames;

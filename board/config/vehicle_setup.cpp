@@ -105,6 +105,7 @@ VisionPipelineConfig visionConfig(const VehicleSetup& s) {
   // After a gap of frames the view has moved on and relocalisation against the old keyframes can fail
   // forever (fault_vision_test: no ORB result for the rest of the dive after 2 s of missing frames).
   v.orb.reset_after_lost_frames = c.orb_reset_after_lost_frames;
+  v.orb.motion_prior.enabled = c.orb_motion_prior;
   v.dense.method = c.dense_method == "sgbm"       ? DenseStereoMethod::kSgbm
                    : c.dense_method == "sgbm-wls" ? DenseStereoMethod::kSgbmWls
                                                   : DenseStereoMethod::kElas;
@@ -114,6 +115,8 @@ VisionPipelineConfig visionConfig(const VehicleSetup& s) {
   v.map_min_kept_fraction = c.map_min_kept_fraction;
   v.planes.registration.covariance_scale = c.planes_covariance_scale;
   v.planes.use_partial = c.planes_partial;
+  v.planes.registration.subspace = c.planes_subspace;
+  v.planes.extraction.independent_points = c.planes_independent_points;
   v.workspace.map.resolution_m = c.map_resolution_m;
   v.workspace.map.filter_distance_m = c.map_filter_distance_m;
   v.workspace.insert_every_n_frames = c.map_every_n_frames;

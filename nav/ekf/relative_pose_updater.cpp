@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
 
 #include "nav/ekf/so3.h"
 
@@ -19,6 +20,42 @@ bool isValidRelativePose(const RelativePoseMeasurement& m) {
   const Block used = m.cov.block(first, first, n, n);
   return Eigen::LLT<Block>(used).info() == Eigen::Success;
 }
+
+int relativePoseConstrainedBasis(const MeasMatrix& cov, MeasMatrix* basis, MeasVector* variance) {
+  const int rows = static_cast<int>(cov.rows());
+  const Eigen::SelfAdjointEigenSolver<MeasMatrix> eig(cov);
+  int k = 0;
+  for (int i = 0; i < rows; ++i) k += eig.eigenvalues()(i) < kRelativePoseUnconstrainedVariance ? 1 : 0;
+  basis->resize(rows, k);
+  variance->resize(k);
+  // Eigenvalues ascend: the first k are the constrained ones.
+  for (int i = 0; i < k; ++i) {
+    basis->col(i) = eig.eigenvectors().col(i);
+    (*variance)(i) = eig.eigenvalues()(i);
+  }
+  return k;
+}
+
+namespace {
+
+// Keeps only the constrained directions of a linearised relative pose (see the header).
+bool projectOnConstrained(Linearization* lin) {
+  const Eigen::SelfAdjointEigenSolver<MeasMatrix> eig(lin->R, Eigen::EigenvaluesOnly);
+  if (eig.eigenvalues().maxCoeff() < kRelativePoseUnconstrainedVariance) return true;  // all measured: as is
+  MeasMatrix U;
+  MeasVector variance;
+  const int k = relativePoseConstrainedBasis(lin->R, &U, &variance);
+  if (k == 0) return false;
+  const MeasVector r = U.transpose() * lin->residual;
+  const MeasJacobian H = U.transpose() * lin->H;
+  lin->m = k;
+  lin->residual = r;
+  lin->H = H;
+  lin->R = variance.asDiagonal();
+  return true;
+}
+
+}  // namespace
 
 int findCloneSlot(const FilterState& s, std::uint32_t clone_id) {
   for (int i = 0; i < s.n_clones; ++i) {
@@ -51,7 +88,7 @@ bool linearizeRelativePose(const FilterState& s, const RelativePoseMeasurement& 
   out->H.block<3, 3>(rot, oa + 3) = -J;
   out->H.block<3, 3>(rot, es::kTheta) = J;
   out->R = m.cov.block(6 - rows, 6 - rows, rows, rows);
-  return true;
+  return projectOnConstrained(out);
 }
 
 }  // namespace deepnav

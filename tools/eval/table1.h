@@ -2,6 +2,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace deepnav::eval {
 
@@ -38,6 +39,12 @@ struct Table1Options {
   // 20 deg/s, so 10 deg per 0.1 s pair is a wide margin. 0 keeps the board's.
   double max_turn_deg = 10.0;
   std::string dump_dir;          // when set: the first scored pair's images and disparity maps as PNGs
+  // Board "key=value" overrides applied to the board stored in the recording (board_overrides.h).
+  std::vector<std::string> overrides;
+  // Rows to run, comma separated names (gt, elas, sgbm, elas-filter, sgbm-filter); empty: all. A
+  // recording without truth maps (/truth/depth, /truth/disparity) has no GT row and no D1.
+  std::string rows;
+  std::string registrations_csv;  // when set: one line per scored registration (errors, NEES)
 };
 
 enum Table1RowId { kRowGt = 0, kRowElas, kRowSgbm, kRowElasFilter, kRowSgbmFilter, kRowCount };
@@ -58,6 +65,17 @@ struct Table1Row {
   double rot_err_median_deg = 0.0;
   double true_rotation_mean_deg = 0.0;  // mean true rotation between the registered pairs
   double ms_per_frame = 0.0;       // CPU of the row's chain (disparity included)
+  // Every registration that constrains some direction (subspace results included) against the true
+  // relative camera pose: error e = [t_est - t_true; Log(R_true^T R_est)] on the constrained directions U
+  // (relativePoseConstrainedBasis of the 6x6 covariance), NEES = e_U^T (U^T C U)^-1 e_U with dof k.
+  int constrained = 0;             // registrations with k >= 1
+  int full_pose = 0;               // ... with k = 6
+  double nees_per_dof_mean = 0.0;  // mean of NEES / k
+  double nees_in_band = 0.0;       // fraction with NEES inside the two-sided 95 % chi-square_k interval
+  double nees_above_band = 0.0;    // fraction above it
+  double trans_err_mean_m = 0.0;   // over registrations with a full translation
+  int translations = 0;
+  bool ran = true;                 // false: not requested, or GT without truth maps
 };
 
 struct Table1Result {
@@ -67,6 +85,7 @@ struct Table1Result {
   std::size_t map_voxels_elas = 0, map_voxels_sgbm = 0;
   double first_scored_t_s = 0.0, last_scored_t_s = 0.0;
   int scale_down = 1;  // images reduced by this before matching (board vision.dense_scale_down)
+  bool truth_maps = true;  // the recording holds /truth/depth and /truth/disparity (D1 and GT row)
   Table1Options options;
 };
 

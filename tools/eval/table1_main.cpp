@@ -21,6 +21,9 @@ int main(int argc, char** argv) {
   app.add_option("--max-disp", o.num_disparities, "disparity range at the matching size (0 = the board's vision.dense_disparities)")->check(CLI::Range(0, 256));
   app.add_option("--max-turn-deg", o.max_turn_deg, "registration rotation prior between consecutive pairs (0 = the board's)");
   app.add_option("--dump-dir", o.dump_dir, "write the first scored pair and its disparity maps as PNGs here");
+  app.add_option("--set", o.overrides, "board override key=value on the stored board (repeatable)");
+  app.add_option("--rows", o.rows, "rows to run, comma separated: gt,elas,sgbm,elas-filter,sgbm-filter (default all)");
+  app.add_option("--registrations-csv", o.registrations_csv, "write one line per scored registration (errors, NEES)");
   app.add_flag("!--quiet", o.progress, "no progress on stderr");
   CLI11_PARSE(app, argc, argv);
 

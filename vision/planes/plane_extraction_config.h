@@ -37,6 +37,9 @@ struct PlaneExtractionConfig {
   // of point i: (Z_i * disparity_noise_px * d / (fx B))^2 + point_noise_floor_m^2.
   double disparity_noise_px = 0.3;
   double point_noise_floor_m = 0.002;
+  // Correlated stereo errors (PlaneNoiseModel::independent_points): at most this many fitted cells count
+  // as independent in the covariance; 0 = all of them (the size test still uses the full Hessian).
+  double independent_points = 0.0;
 
   // Polygons
   int max_polygons = 256;

@@ -6,7 +6,8 @@ bool PlaneExtractor::init(const PlaneExtractionConfig& config, const StereoGeome
                           int rows, int cols, int step_px) {
   ready_ = false;
   if (!geometry.isValid() || config.max_polygons < 1 || config.max_polygon_points < 1 ||
-      config.disparity_noise_px <= 0.0 || config.point_noise_floor_m < 0.0) {
+      config.disparity_noise_px <= 0.0 || config.point_noise_floor_m < 0.0 ||
+      config.independent_points < 0.0) {
     return false;
   }
   if (!grower_.init(config, geometry.fx_px, geometry.focalBaseline(), rows, cols, step_px)) {
@@ -17,6 +18,7 @@ bool PlaneExtractor::init(const PlaneExtractionConfig& config, const StereoGeome
   step_px_ = step_px;
   noise_.disparity_noise_per_fb = config.disparity_noise_px / geometry.focalBaseline();
   noise_.floor_m = config.point_noise_floor_m;
+  noise_.independent_points = config.independent_points;
   neighbour_planes_.assign(static_cast<std::size_t>(config.max_planes) * config.max_planes,
                            Eigen::Vector4f::Zero());
   fits_.assign(config.max_planes, PlaneFitAccumulator{});

@@ -29,6 +29,7 @@ void PlaneFitAccumulator::reset(const ScatterSums& sums, const Eigen::Vector3d& 
   k_ = noise.disparity_noise_per_fb * std::abs(d0);
   kd2_ = noise.disparity_noise_per_fb * noise.disparity_noise_per_fb;
   floor2_ = noise.floor_m * noise.floor_m;
+  independent_points_ = noise.independent_points;
   kf_ = static_cast<float>(k_);
   floor2f_ = static_cast<float>(floor2_);
   neighbour_count_ = std::min(neighbours.count, kMaxNeighbours);
@@ -96,7 +97,8 @@ bool PlaneFitAccumulator::solve(const ScatterSums& sums, int point_count, Plane*
   B.block<3, 1>(0, 1) = eig.eigenvectors().col(2);
   B(3, 2) = 1.0;
   const Eigen::Matrix3d info = B.transpose() * H * B;
-  const Eigen::Matrix4d C = B * info.ldlt().solve(B.transpose());
+  Eigen::Matrix4d C = B * info.ldlt().solve(B.transpose());
+  if (independent_points_ > 0.0 && fitted_ > independent_points_) C *= fitted_ / independent_points_;
 
   plane->n_in_cam = n;
   plane->d_m = d;

@@ -13,9 +13,18 @@ namespace deepnav {
 // sigma_Z = Z^2 sigma_d / (f B), sigma_ray = sigma_Z |p| / Z; projected on the normal n it is
 // sigma_Z |n.p| / Z = Z sigma_d |d| / (f B) for a point on the plane n.p = d. An isotropic floor
 // keeps planes seen edge-on (d -> 0) from claiming infinite precision.
+//
+// Correlated errors: dense stereo does not measure every pixel independently. Windows overlap, and on
+// weakly textured surfaces (murky water, a plain panel face) ELAS matches a few support points and
+// interpolates the disparity between them, so the depth error of a whole face is set by a handful of
+// matches. The fit's covariance, which assumes independent cells, then shrinks as 1/N while the error
+// does not (measured on the sea-trial dive: plane registrations 30-100x their predicted sigma).
+// independent_points > 0 caps the cells counted as independent: the covariance is that of a fit of
+// independent_points cells spread as the fitted ones, C * N_fit / independent_points (N_fit above it).
 struct PlaneNoiseModel {
   double disparity_noise_per_fb = 0.3 / 84.0;  // sigma_d / (f B), 1/m
   double floor_m = 0.002;
+  double independent_points = 0.0;  // 0: every fitted cell independent
 };
 
 // Weighted least-squares plane of a grown region with its uncertainty (Pathak, Vaskevicius &
@@ -125,6 +134,7 @@ class PlaneFitAccumulator {
   double k_ = 0.0;    // residual sigma = k Z
   double kd2_ = 0.0;  // kd^2
   double floor2_ = 0.0;
+  double independent_points_ = 0.0;
   float kf_ = 0.0f;
   float floor2f_ = 0.0f;
   // Per neighbouring plane j, for the division-free band test: d0 n_j, d_j, and

@@ -31,9 +31,12 @@ bool PlaneOdometry::process(TimeUs t_us, const OrganizedCloud& cloud, PlaneOdome
   // Planes of a are the previous frame's, planes of b this frame's: the motion of b in a.
   const PlaneRegistrationResult& reg = out->registration;
   if (!registrar_.registerPlanes(sets_[previous], sets_[next], &out->registration)) return false;
-  const bool partial = config_.use_partial && reg.status == PlaneRegistrationStatus::kRotationUnobservable &&
-                       reg.matched_planes >= 1;
-  if (!reg.valid && !partial) return false;
+  // With the registration's subspace mode every result that constrains a direction is a measurement (its
+  // rotation is already the smallest one about the parallel normals).
+  const bool subspace = config_.registration.subspace && (reg.rotation_dims > 0 || reg.translation_dims > 0);
+  const bool partial = !subspace && config_.use_partial &&
+                       reg.status == PlaneRegistrationStatus::kRotationUnobservable && reg.matched_planes >= 1;
+  if (!reg.valid && !partial && !subspace) return false;
   VoMeasurement& vo = out->vo;
   vo.valid = true;
   vo.source = VoSource::kPlanes;

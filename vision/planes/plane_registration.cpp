@@ -57,6 +57,7 @@ void PlaneRegistrar::fitTranslation(const PlaneSet& a, const PlaneSet& b,
                                     PlaneRegistrationResult* result) {
   const int count = result->matched_planes;
   TranslationResult translation;
+  TranslationSubspaceResult subspace;
   Eigen::Vector3d t = Eigen::Vector3d::Zero();
   for (int pass = 0; pass < 2; ++pass) {  // pass 1 re-weights with the normal term t^T C_n t
     for (int i = 0; i < count; ++i) {
@@ -68,12 +69,21 @@ void PlaneRegistrar::fitTranslation(const PlaneSet& a, const PlaneSet& b,
                                t.dot((pa.normalCovariance() + pb.normalCovariance()) * t),
                            1e-18);
     }
-    if (!solvePlaneTranslation(v_a_.data(), delta_d_.data(), var_d_.data(), count,
-                               config_.min_translation_eigenvalue, &translation) ||
-        !translation.observable) {
-      return;
+    if (config_.subspace) {
+      if (!solvePlaneTranslationSubspace(v_a_.data(), delta_d_.data(), var_d_.data(), count,
+                                         config_.min_translation_eigenvalue, &subspace) ||
+          subspace.dims == 0) {
+        return;
+      }
+      t = subspace.t_m;
+    } else {
+      if (!solvePlaneTranslation(v_a_.data(), delta_d_.data(), var_d_.data(), count,
+                                 config_.min_translation_eigenvalue, &translation) ||
+          !translation.observable) {
+        return;
+      }
+      t = translation.t_m;
     }
-    t = translation.t_m;
   }
   for (int i = 0; i < count; ++i) {
     if (std::abs(v_a_[i].dot(t) - delta_d_[i]) > config_.max_offset_residual_m) {
@@ -83,7 +93,41 @@ void PlaneRegistrar::fitTranslation(const PlaneSet& a, const PlaneSet& b,
   }
   result->has_translation = true;
   result->p_camb_in_cama_m = t;
-  result->cov.topLeftCorner<3, 3>() = translation.cov_m2 * config_.covariance_scale;
+  if (config_.subspace) {
+    result->translation_dims = subspace.dims;
+    // Only the constrained directions are scaled: the others hold the unobservable variance.
+    result->cov.topLeftCorner<3, 3>() = subspace.cov_constrained_m2 * config_.covariance_scale +
+                                        subspace.unconstrained * config_.unobservable_variance;
+  } else {
+    result->translation_dims = 3;
+    result->cov.topLeftCorner<3, 3>() = translation.cov_m2 * config_.covariance_scale;
+  }
+}
+
+// Parallel planes only: the smallest rotation taking the (weighted mean) normal of b onto that of a;
+// per-axis variance 1 / sum w across the normal (the q-method's information sum w (I - n n^T) about
+// b's axes), unobservable about it.
+void PlaneRegistrar::fitParallelRotation(const PlaneSet& a, const PlaneSet& b,
+                                         PlaneRegistrationResult* result) const {
+  Eigen::Vector3d n_a = Eigen::Vector3d::Zero(), n_b = Eigen::Vector3d::Zero();
+  double w_sum = 0.0;
+  for (int i = 0; i < result->matched_planes; ++i) {
+    const Plane& pa = a[result->matches[i].a];
+    const Plane& pb = b[result->matches[i].b];
+    const double var = 0.5 * (pa.normalCovariance().trace() + pb.normalCovariance().trace());
+    const double w = 1.0 / std::max(var, 1e-18);
+    n_a += w * pa.n_in_cam;
+    n_b += w * pb.n_in_cam;
+    w_sum += w;
+  }
+  n_a.normalize();
+  n_b.normalize();
+  result->q_cama_camb = Eigen::Quaterniond::FromTwoVectors(n_b, n_a);
+  const Eigen::Matrix3d along = n_b * n_b.transpose();
+  result->cov.bottomRightCorner<3, 3>() = (Eigen::Matrix3d::Identity() - along) *
+                                              (config_.covariance_scale / w_sum) +
+                                          config_.unobservable_variance * along;
+  result->rotation_dims = 2;
 }
 
 bool PlaneRegistrar::registerPlanes(const PlaneSet& a, const PlaneSet& b,
@@ -132,7 +176,13 @@ bool PlaneRegistrar::registerPlanes(const PlaneSet& a, const PlaneSet& b,
   result->valid = rotation.observable_dims == 3 && rotationObservable(a, count, matches_);
   result->status =
       result->valid ? PlaneRegistrationStatus::kOk : PlaneRegistrationStatus::kRotationUnobservable;
-  if (result->valid) fitTranslation(a, b, result);
+  if (result->valid) {
+    result->rotation_dims = 3;
+    fitTranslation(a, b, result);
+  } else if (config_.subspace) {
+    fitParallelRotation(a, b, result);
+    fitTranslation(a, b, result);
+  }
   return true;
 }
 

@@ -37,6 +37,8 @@ struct PlaneRegistrationResult {
   Eigen::Vector3d p_camb_in_cama_m = Eigen::Vector3d::Zero();
   Eigen::Matrix<double, 6, 6> cov = Eigen::Matrix<double, 6, 6>::Identity();
   int matched_planes = 0;
+  int rotation_dims = 0;     // constrained rotation axes (3 valid; 2 parallel planes with `subspace`)
+  int translation_dims = 0;  // constrained translation directions (3 with has_translation unless `subspace`)
   std::array<PlaneMatch, PlaneCorrespondenceSearch::kMaxMatches> matches{};
   int candidate_pairs = 0;
   int rejected_by_verification = 0;
@@ -51,6 +53,8 @@ struct PlaneRegistrationResult {
 // are dropped and the fit repeated; the translation is the weighted least-squares solution of
 // n_a . t = d_a - d_b (variance C_d,a + C_d,b + t^T C_n,a t, one re-weighting) when the matched
 // normals span 3D. Rotation and translation are decoupled (zero cross-covariance), as in the paper.
+// With config.subspace, degenerate sets give what they constrain (rotation_dims, translation_dims;
+// the other directions carry unobservable_variance): see PlaneRegistrationConfig::subspace.
 class PlaneRegistrar {
  public:
   bool init(const PlaneRegistrationConfig& config);
@@ -65,6 +69,7 @@ class PlaneRegistrar {
       const PlaneSet& a, int count,
       const std::array<PlaneMatch, PlaneCorrespondenceSearch::kMaxMatches>& matches) const;
   void fitTranslation(const PlaneSet& a, const PlaneSet& b, PlaneRegistrationResult* result);
+  void fitParallelRotation(const PlaneSet& a, const PlaneSet& b, PlaneRegistrationResult* result) const;
 
   bool ready_ = false;
   PlaneRegistrationConfig config_;

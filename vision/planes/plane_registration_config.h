@@ -28,6 +28,12 @@ struct PlaneRegistrationConfig {
   // Multiplies the output covariance: the per-point stereo errors are correlated (window
   // matching, interpolation), so the independent-noise covariance is optimistic.
   double covariance_scale = 1.0;
+  // Degenerate sets contribute the directions they constrain (false: the paper's behaviour, a result
+  // needs two non-parallel planes and its translation three spanning 3D). When true, parallel planes
+  // only (one plane, or a face and its fixtures) give the two rotation axes across their normal (the
+  // smallest rotation taking the normals of b onto those of a, nothing about the normal) and every
+  // result the translation in the span of its normals (one plane: along it; two: their span).
+  bool subspace = false;
   // Budget of the consistent-set search (branch-and-bound nodes); 0 = unlimited.
   int max_search_nodes = 50000;
 };

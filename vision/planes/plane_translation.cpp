@@ -28,4 +28,37 @@ bool solvePlaneTranslation(const Eigen::Vector3d* n_a, const double* delta_d_m,
   return true;
 }
 
+bool solvePlaneTranslationSubspace(const Eigen::Vector3d* n_a, const double* delta_d_m,
+                                   const double* var_m2, int count, double min_eigenvalue,
+                                   TranslationSubspaceResult* result) {
+  if (result == nullptr || count < 1) return false;
+  Eigen::Matrix3d N = Eigen::Matrix3d::Zero();
+  Eigen::Matrix3d A = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d b = Eigen::Vector3d::Zero();
+  for (int i = 0; i < count; ++i) {
+    if (!(var_m2[i] > 0.0)) return false;
+    N += n_a[i] * n_a[i].transpose();
+    A += n_a[i] * n_a[i].transpose() / var_m2[i];
+    b += n_a[i] * delta_d_m[i] / var_m2[i];
+  }
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
+  eig.computeDirect(N / count);
+  // Eigenvalues ascend: the constrained directions are the last `dims`.
+  int dims = 0;
+  for (int i = 0; i < 3; ++i) dims += eig.eigenvalues()(i) >= min_eigenvalue ? 1 : 0;
+  result->dims = dims;
+  result->t_m.setZero();
+  result->cov_constrained_m2.setZero();
+  result->unconstrained.setIdentity();
+  if (dims == 0) return true;
+  const Eigen::Matrix<double, 3, Eigen::Dynamic, 0, 3, 3> V = eig.eigenvectors().rightCols(dims);
+  const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3> info = V.transpose() * A * V;
+  const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 3, 3> cov_v = info.inverse();
+  result->t_m = V * (cov_v * (V.transpose() * b));
+  const Eigen::Matrix3d cov = V * cov_v * V.transpose();
+  result->cov_constrained_m2 = 0.5 * (cov + cov.transpose());
+  result->unconstrained = Eigen::Matrix3d::Identity() - V * V.transpose();
+  return true;
+}
+
 }  // namespace deepnav

@@ -19,4 +19,20 @@ bool solvePlaneTranslation(const Eigen::Vector3d* n_a, const double* delta_d_m,
                            const double* var_m2, int count, double min_eigenvalue,
                            TranslationResult* result);
 
+// The same least squares restricted to the directions the normals constrain: V = the eigenvectors
+// of mean(n n^T) with eigenvalue >= min_eigenvalue (one plane: its normal; two non-parallel planes:
+// their span; three spanning 3D: all), t = V (V^T A V)^-1 V^T b (no component along the others),
+// cov_constrained = V (V^T A V)^-1 V^T, unconstrained = I - V V^T (the projector on the others; the
+// registration puts its unobservable variance there). `dims` = columns of V.
+struct TranslationSubspaceResult {
+  Eigen::Vector3d t_m = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d cov_constrained_m2 = Eigen::Matrix3d::Zero();
+  Eigen::Matrix3d unconstrained = Eigen::Matrix3d::Identity();
+  int dims = 0;
+};
+
+bool solvePlaneTranslationSubspace(const Eigen::Vector3d* n_a, const double* delta_d_m,
+                                   const double* var_m2, int count, double min_eigenvalue,
+                                   TranslationSubspaceResult* result);
+
 }  // namespace deepnav
