@@ -1,5 +1,7 @@
 #include "board/loop/nav_core.h"
 
+#include "nav/ekf/systematic_states.h"
+
 namespace deepnav {
 
 namespace {
@@ -68,6 +70,7 @@ void NavCore::count(FuseResult r) {
     case FuseStatus::kDroppedLate: ++counters_.dropped_late; break;
     case FuseStatus::kBadInput: ++counters_.bad_input; break;
     case FuseStatus::kNotAligned: ++counters_.not_aligned; break;
+    case FuseStatus::kRefused: ++counters_.refused; break;
   }
 }
 
@@ -109,8 +112,20 @@ void NavCore::consume(const InputSample& sample) {
   }
 }
 
+// The sensor-error estimates once a second, when the board estimates any systematic state.
+void NavCore::recordEstimatorStates(TimeUs t_us) {
+  if (sink_ == nullptr || !ekf_.aligned() || ekf_.state().sys_layout.dim == 0) return;
+  if (last_states_t_us_ >= 0 && t_us - last_states_t_us_ < kEstimatorStatesPeriodUs) return;
+  last_states_t_us_ = t_us;
+  sink_->recordEstimatorStates(estimatorStates(ekf_.state(), t_us));
+}
+
 const NavSolution& NavCore::tick(TimeUs t_us) {
   solution_ = ekf_.solution(t_us);
+  // The fusions since the last tick (nav/ekf/fusion_diagnostic.h), before this tick's solution.
+  for (int i = 0; sink_ != nullptr && i < ekf_.diagnostics().size(); ++i) sink_->recordFusion(ekf_.diagnostics().at(i));
+  ekf_.clearDiagnostics();
+  recordEstimatorStates(t_us);
   if (ekf_.aligned()) poses_.push(solution_.t_us, solution_.p_robot_in_odom_m, solution_.q_odom_robot);
   // The solution is stamped with the tick; the filter state it holds is that of the last IMU sample
   // (at most one IMU period older at 100 Hz).

@@ -20,6 +20,7 @@ namespace deepnav {
 struct InputCounters {
   std::uint64_t imu = 0, dvl = 0, depth = 0, heading = 0, attitude = 0, vision = 0;
   std::uint64_t accepted = 0, rejected = 0, queued = 0, dropped_late = 0, bad_input = 0, not_aligned = 0;
+  std::uint64_t refused = 0;  // refused by a source health check (the compass in a magnetic disturbance)
 };
 
 // The deterministic heart of the nav loop: every input it consumes is recorded and fed to the filter, and
@@ -55,6 +56,9 @@ class NavCore {
  private:
   void count(FuseResult r);
   void consumeVision(const VisionResult& v);
+  void recordEstimatorStates(TimeUs t_us);
+
+  static constexpr TimeUs kEstimatorStatesPeriodUs = 1'000'000;
 
   Ekf ekf_;
   PoseHistory poses_;
@@ -71,6 +75,7 @@ class NavCore {
   NavSolution solution_;
   InputCounters counters_;
   double image_quality_ = -1.0;
+  TimeUs last_states_t_us_ = -1;  // last /nav/estimator_states record
 };
 
 }  // namespace deepnav

@@ -1,10 +1,12 @@
 #include "board/replay/bench_replay.h"
+#include "board/replay/fusion_csv.h"
 
 #include "board/config/recording_options.h"
 #include "board/config/text_file.h"
 #include "board/config/board_overrides.h"
 #include "board/replay/workspace_files.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -33,6 +35,7 @@ struct PendingVision {
 struct BenchRun {
   VehicleSetup setup;
   RecordingWriter writer;
+  FusionCsvSink sink{&writer};  // the core's sink: the writer, and the diagnostics kept for fusion.csv
   NavCore core;
   VisionPipeline vision;
   VisionContextSource context;
@@ -61,14 +64,32 @@ void countVoOffers(BenchRun* run, const InputSample& sample) {
   if (v->vo_planes.valid) ++run->summary->vo_offers.planes;
 }
 
+// The stage-2 VO results of a vision result just consumed, with what VoFusion made of them.
+void noteVoOutcomes(BenchRun* run, const InputSample& sample, bool stage2) {
+  const auto* v = std::get_if<VisionResult>(&sample);
+  if (!v || !v->frame_ok || !stage2) return;
+  for (const VoMeasurement* vo : {&v->vo_orb, &v->vo_planes}) {
+    if (vo->valid) run->summary->vo_offered.push_back({v->t_us, *vo, run->core.vo().lastOutcome(vo->source)});
+  }
+}
+
 // Every input goes to the loop through the tap when there is one (fault injection on the bench).
 void feed(BenchRun* run, const InputSample& sample) {
   countVoOffers(run, sample);
+  const bool stage2 = run->core.last().stage == NavStage::kOptimised;
   if (run->tap) {
     run->tap->onInput(sample, &run->core);
   } else {
     run->core.consume(sample);
   }
+  noteVoOutcomes(run, sample, stage2);
+}
+
+void noteFrameTruth(BenchRun* run, const FrameTruth& t) {
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.linear() = t.q_odom_left_cam.normalized().toRotationMatrix();
+  T.translation() = t.p_left_cam_in_odom_m;
+  run->summary->frame_truth.push_back({t.t_us, T});
 }
 
 bool initRun(const ReplayOptions& o, const RecordingReader& reader, BenchRun* run, std::string* error) {
@@ -100,7 +121,7 @@ bool initRun(const ReplayOptions& o, const RecordingReader& reader, BenchRun* ru
   if (!run->vision.init(visionConfig(run->setup), error)) return false;
   run->vision_off = !c.markers.enabled && c.vision.vo_mode == "none";
   run->context.init(robotFromCamera(run->setup));
-  if (!run->core.init(run->setup, &run->writer, error)) return false;
+  if (!run->core.init(run->setup, &run->sink, error)) return false;
   // A run of `deepnav run` that started from its saved workspace (service.state_dir): its stage machine
   // knew that, so the reproduction must too (the recorded vision results carry the map's state).
   if (const auto* ws = reader.metadata("deepnav.workspace");
@@ -226,6 +247,9 @@ bool onRerunEvent(BenchRun* run, const ReplayEvent& e) {
       return true;
     case ReplayEvent::Kind::kSolution:
       return true;  // outputs of an earlier run: recomputed here
+    case ReplayEvent::Kind::kFrameTruth:
+      noteFrameTruth(run, *e.frame_truth);
+      return true;
     case ReplayEvent::Kind::kFrame:
       noteTime(run, e.t_us);
       advanceTicksTo(run, e.t_us);
@@ -254,6 +278,9 @@ bool onReproduceEvent(BenchRun* run, const ReplayEvent& e) {
     case ReplayEvent::Kind::kFrame:
       run->writer.recordFrame(*e.frame, -1);
       ++run->summary->frames;
+      return true;
+    case ReplayEvent::Kind::kFrameTruth:
+      noteFrameTruth(run, *e.frame_truth);
       return true;
     case ReplayEvent::Kind::kInput:
       noteTime(run, e.t_us);
@@ -304,6 +331,9 @@ void computeReplayMetrics(ReplaySummary* s) {
   if (!s->has_truth) return;
   s->metrics = computeMetrics(s->estimate, s->tick_records, s->truth, s->truth_T_odom_panel);
   s->errors = s->metrics.odom.whole;
+  std::sort(s->frame_truth.begin(), s->frame_truth.end(),
+            [](const FrameTruthPose& a, const FrameTruthPose& b) { return a.t_us < b.t_us; });
+  s->vo_consistency = computeVoConsistency(s->vo_offered, s->frame_truth);
 }
 
 bool loadReplaySetup(const std::string& board_path, const RecordingReader& reader, const std::string& recording,
@@ -325,6 +355,7 @@ bool runBenchReplay(const ReplayOptions& o, ReplaySummary* summary, std::string*
   *summary = ReplaySummary{};
   RecordingReader reader;
   if (!reader.open(o.input_path, error)) return false;
+  reader.setDeliverFrameTruth(true);  // VO consistency (vo_consistency.h); the loop never sees it
   auto run = std::make_unique<BenchRun>();
   run->summary = summary;
   run->tap = o.tap;
@@ -356,6 +387,7 @@ bool runBenchReplay(const ReplayOptions& o, ReplaySummary* summary, std::string*
   summary->loop = run->scheduler.stats();
   summary->vo = run->core.vo().counters();
   summary->modalities = modalityCounts(run->core, summary->vo_offers);
+  summary->estimator_states = estimatorStatesReport(run->core.ekf());
   summary->map_frames = run->vision.workspace().frames();
   summary->map_voxels = run->vision.workspace().voxels();
   if (!o.workspace_out.empty() && !summary->reproduce) {
@@ -373,7 +405,8 @@ bool runBenchReplay(const ReplayOptions& o, ReplaySummary* summary, std::string*
   if (!run->writer.close(&close_error)) summary->warnings.push_back("replay.mcap: " + close_error);
   if (!ok) return false;
   computeReplayMetrics(summary);
-  return writeReplayOutputs(o.out_dir, *summary, error);
+  return writeReplayOutputs(o.out_dir, *summary, error) &&
+         writeFusionCsv(o.out_dir + "/fusion.csv", run->sink.rows(), error);
 }
 
 }  // namespace deepnav

@@ -7,8 +7,10 @@
 #include <Eigen/Geometry>
 
 #include "board/loop/nav_core.h"
+#include "board/replay/estimator_states_report.h"
 #include "board/replay/replay_metrics.h"
 #include "board/replay/replay_tap.h"
+#include "board/replay/vo_consistency.h"
 #include "drivers/replay/recording_reader.h"
 #include "nav/metrics/smoothness.h"
 #include "nav/metrics/stamped_pose.h"
@@ -81,6 +83,10 @@ struct ReplaySummary {
   ReplayMetrics metrics;             // panel-relative error, ATE, RPE, NEES (replay_metrics.h)
   VoOffers vo_offers;
   ModalityCounts modalities;
+  std::vector<VoOffer> vo_offered;        // every stage-2 VO result offered, with its outcome
+  std::vector<FrameTruthPose> frame_truth;  // true left-camera pose per pair (/truth/frame), if recorded
+  VoConsistency vo_consistency;           // vo_offered scored against frame_truth (vo_consistency.h)
+  EstimatorStatesReport estimator_states;  // the filter's sensor-error estimates at the end
 };
 
 // Replays a recording through the same NavCore as the vehicle, as fast as the machine goes:

@@ -220,6 +220,10 @@ bool writeReplayOutputs(const std::string& dir, const ReplaySummary& s, std::str
   if (!s.frame_stats.empty() && !writeFrameStats(dir + "/frames.csv", s.frame_stats, error)) return false;
   if (s.has_truth && !writeTum(dir + "/truth.tum", s.truth, error)) return false;
   if (s.has_truth && !writeNees(dir + "/nees.csv", s.metrics, error)) return false;
+  if (!s.vo_consistency.rows.empty() &&
+      !writeVoConsistencyCsv(dir + "/vo_consistency.csv", s.vo_consistency, error)) {
+    return false;
+  }
   if (s.metrics.panel && (!writeTum(dir + "/panel_trajectory.tum", s.metrics.panel_estimate, error) ||
                           !writeTum(dir + "/panel_truth.tum", s.metrics.panel_truth, error))) {
     return false;
@@ -243,6 +247,8 @@ bool writeReplayOutputs(const std::string& dir, const ReplaySummary& s, std::str
   out << "  \"workspace\": {\"restored\": " << (s.workspace_restored ? "true" : "false")
       << ", \"map_frames\": " << s.map_frames << ", \"map_voxels\": " << s.map_voxels << "},\n";
   out << "  \"modalities\": " << modalitiesJson(s.modalities) << ",\n";
+  out << "  \"estimator_states\": " << estimatorStatesJson(s.estimator_states) << ",\n";
+  out << "  \"vo_consistency\": " << voConsistencyJson(s.vo_consistency) << ",\n";
   out << "  \"vo\": {\"offered\": " << s.vo.measurements << ", \"accepted\": " << s.vo.accepted
       << ", \"rejected\": " << s.vo.rejected << ", \"no_clone\": " << s.vo.no_clone << ", \"accepted_orb\": "
       << s.vo.accepted_by_source[1] << ", \"accepted_planes\": " << s.vo.accepted_by_source[2] << "},\n";

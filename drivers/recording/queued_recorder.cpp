@@ -32,6 +32,9 @@ void QueuedRecorder::recordInput(const InputSample& sample) { queue_.push(Item(s
 
 void QueuedRecorder::recordSolution(const NavSolution& solution) { queue_.push(Item(solution)); }
 
+void QueuedRecorder::recordFusion(const FusionDiagnostic& diagnostic) { queue_.push(Item(diagnostic)); }
+void QueuedRecorder::recordEstimatorStates(const EstimatorStates& states) { queue_.push(Item(states)); }
+
 void QueuedRecorder::recordLoopStats(TimeUs t_us, const LoopStats& stats) {
   queue_.push(Item(StatsRecord{t_us, stats}));
 }
@@ -54,6 +57,8 @@ bool QueuedRecorder::drainOnce() {
   while (const Item* item = queue_.front()) {
     if (const auto* in = std::get_if<InputSample>(item)) writer_.recordInput(*in);
     else if (const auto* sol = std::get_if<NavSolution>(item)) writer_.recordSolution(*sol);
+    else if (const auto* fusion = std::get_if<FusionDiagnostic>(item)) writer_.recordFusion(*fusion);
+    else if (const auto* states = std::get_if<EstimatorStates>(item)) writer_.recordEstimatorStates(*states);
     else {
       const auto& st = std::get<StatsRecord>(*item);
       writer_.recordLoopStats(st.t_us, st.stats);

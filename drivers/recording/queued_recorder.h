@@ -28,7 +28,7 @@ class QueuedRecorder : public RecordSink {
     TimeUs t_us = 0;
     LoopStats stats;
   };
-  using Item = std::variant<InputSample, NavSolution, StatsRecord>;
+  using Item = std::variant<InputSample, NavSolution, StatsRecord, FusionDiagnostic, EstimatorStates>;
 
   QueuedRecorder() = default;
   ~QueuedRecorder() { stop(nullptr); }
@@ -46,6 +46,8 @@ class QueuedRecorder : public RecordSink {
 
   void recordInput(const InputSample& sample) override;
   void recordSolution(const NavSolution& solution) override;
+  void recordFusion(const FusionDiagnostic& diagnostic) override;
+  void recordEstimatorStates(const EstimatorStates& states) override;
   void recordFrame(const StereoFrame& frame, int pool_index) override;
   void recordLoopStats(TimeUs t_us, const LoopStats& stats);
 

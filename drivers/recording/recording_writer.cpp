@@ -3,6 +3,8 @@
 #include <algorithm>
 
 #include "drivers/cdr/ros2msg_definitions.h"
+#include "drivers/recording/estimator_states_codec.h"
+#include "drivers/recording/fusion_codec.h"
 #include "drivers/recording/sample_codec.h"
 #include "drivers/recording/truth_codec.h"
 
@@ -76,6 +78,14 @@ void RecordingWriter::recordInput(const InputSample& sample) {
 void RecordingWriter::recordSolution(const NavSolution& s) {
   put(Topic::kOdometry, s.t_us, encodeOdometry(s, buffer_.data(), buffer_.size()));
   put(Topic::kNavSolution, s.t_us, encodeSolution(s, buffer_.data(), buffer_.size()));
+}
+
+void RecordingWriter::recordFusion(const FusionDiagnostic& d) {
+  put(Topic::kFusion, d.t_us, encodeFusion(d, buffer_.data(), buffer_.size()));
+}
+
+void RecordingWriter::recordEstimatorStates(const EstimatorStates& e) {
+  put(Topic::kEstimatorStates, e.t_us, encodeEstimatorStates(e, buffer_.data(), buffer_.size()));
 }
 
 void RecordingWriter::recordFrame(const StereoFrame& frame, int /*pool_index*/) {

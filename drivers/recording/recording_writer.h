@@ -36,6 +36,8 @@ class RecordingWriter : public RecordSink {
 
   void recordInput(const InputSample& sample) override;
   void recordSolution(const NavSolution& solution) override;
+  void recordFusion(const FusionDiagnostic& diagnostic) override;
+  void recordEstimatorStates(const EstimatorStates& states) override;
   void recordFrame(const StereoFrame& frame, int pool_index) override;
   void recordTruth(const TruthSample& truth);
   // Simulator ground truth of one stereo pair: /truth/frame, then /truth/depth and /truth/disparity

@@ -27,6 +27,8 @@ constexpr std::array<TopicInfo, kTopicCount> kTopics = {{
     {"/truth/frame", "deepnav_msgs/msg/FrameTruth", "odom"},
     {"/truth/depth", "sensor_msgs/msg/Image", "camera_left"},
     {"/truth/disparity", "sensor_msgs/msg/Image", "camera_left"},
+    {"/nav/fusion", "deepnav_msgs/msg/FusionDiagnostic", "odom"},
+    {"/nav/estimator_states", "deepnav_msgs/msg/EstimatorStates", "base_link"},
 }};
 
 // The project's own messages. Units in comments, frames as in the README.
@@ -94,6 +96,30 @@ const ros::MsgDefinitions& projectDefinitions() {
        "geometry_msgs/Pose camera_left # left optical frame (z forward, x right, y down) in odom\n"
        "geometry_msgs/Pose camera_right # right optical frame in odom\n"
        "int32[] visible_marker_ids # ascending; all 4 corners in the left image and unobstructed\n"},
+      {"deepnav_msgs/EstimatorStates",
+       "std_msgs/Header header # stamp = the loop tick\n"
+       "float64[3] gyro_bias # rad/s, robot frame (FLU)\nfloat64[3] gyro_bias_sigma\n"
+       "float64[3] accel_bias # m/s^2, robot frame\nfloat64[3] accel_bias_sigma\n"
+       "bool dvl_scale_estimated\nfloat64 dvl_scale # fraction: v_measured = (1 + s) v_true\nfloat64 dvl_scale_sigma\n"
+       "bool dvl_misalignment_estimated\n"
+       "float64[3] dvl_misalignment # rad, rotation vector: R_robot_dvl_true = R_robot_dvl Exp(a)\n"
+       "float64[3] dvl_misalignment_sigma\n"
+       "bool compass_bias_estimated\nfloat64 compass_bias # rad, added to the heading\nfloat64 compass_bias_sigma\n"
+       "bool compass_deviation_estimated\n"
+       "float64[4] compass_deviation # rad: B sin psi, C cos psi, D sin 2psi, E cos 2psi (psi magnetic heading)\n"
+       "float64[4] compass_deviation_sigma\n"},
+      {"deepnav_msgs/FusionDiagnostic",
+       "std_msgs/Header header # stamp = capture time of the measurement\n"
+       "uint8 source # 0 imu, 1 dvl, 2 depth, 3 heading, 4 attitude, 5 markers, 6 vo_orb, 7 vo_planes\n"
+       "string source_name\n"
+       "uint8 reason # 0 fused, 1 fused_deweighted, 2 gate, 3 unusable, 4 bad_input, 5 frozen, 6 late, "
+       "7 mag_disturbance\n"
+       "string reason_name\nbool fused\n"
+       "float64[] innovation # z - h(x): dvl m/s (x y z, DVL frame), depth m, heading rad (ENU yaw), "
+       "attitude rad (roll pitch), poses m and rad (x y z rx ry rz)\n"
+       "float64[] innovation_variance # diag of S = H P H^T + R, squared units\n"
+       "float64 test_ratio # innovation^2 / (gate^2 S) (chi-square form for several dof); <= 1 passes\n"
+       "uint8 mag_state # compass after this sample: 0 clean, 1 suspect (de-weighted), 2 disturbed (refused)\n"},
       {"deepnav_msgs/LoopStats",
        "std_msgs/Header header\nstring[] task_names\nuint64[] runs\nuint64[] overruns\n"
        "float64[] mean_us\nint64[] max_us\nuint64 ticks\nuint64 late_ticks\nint64 max_lateness_us\n"},

@@ -25,6 +25,8 @@ enum class Topic : int {
   kFrameTruth,     // deepnav_msgs/msg/FrameTruth: true robot and camera poses, visible markers per stereo pair
   kTruthDepth,     // sensor_msgs/msg/Image 32FC1: true depth of the left image, m, 0 = no surface
   kTruthDisparity, // sensor_msgs/msg/Image 16UC1: true disparity of the left image, px * 128, 0 = no surface
+  kFusion,         // deepnav_msgs/msg/FusionDiagnostic: one measurement's fusion (innovation, test ratio, why refused)
+  kEstimatorStates,  // deepnav_msgs/msg/EstimatorStates: sensor-error estimates and sigmas (1 Hz, when the board estimates any)
   kCount
 };
 

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "nav/ekf/ekf_config.h"
+#include "nav/ekf/systematic_states.h"
 
 namespace deepnav {
 namespace {
@@ -66,6 +67,7 @@ bool conditionCovariance(const VarianceBounds& b, FilterState* s, int sym_dim) {
     boundBlock(es::cloneOffset(k), b.pos_min, b.pos_max, s);
     boundBlock(es::cloneOffset(k) + 3, b.angle_min, b.angle_max, s);
   }
+  boundSystematicVariances(s);
   return true;
 }
 
@@ -79,6 +81,8 @@ void resetCovariance(const EkfConfig& c, FilterState* s) {
   d(es::kTheta + 2) = c.init_yaw_sigma_rad * c.init_yaw_sigma_rad;
   d.segment<3>(es::kBg).setConstant(c.init_gyro_bias_sigma_radps * c.init_gyro_bias_sigma_radps);
   d.segment<3>(es::kBa).setConstant(c.init_accel_bias_sigma_mps2 * c.init_accel_bias_sigma_mps2);
+  s->sys_layout = systematicLayout(c);
+  resetSystematicCovariance(c, s);
 }
 
 }  // namespace deepnav

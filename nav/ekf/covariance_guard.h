@@ -25,7 +25,8 @@ VarianceBounds varianceBoundsFrom(const EkfConfig& config);
 // propagation passes es::kCoreDim; an update passes s->dim() (the default).
 bool conditionCovariance(const VarianceBounds& bounds, FilterState* s, int sym_dim = es::kMaxDim);
 
-// Initial covariance of the core state (diagonal, from the config sigmas); clones are dropped.
+// Initial covariance of the core state (diagonal, from the config sigmas) and of the systematic states
+// the config enables (systematic_states.h); clones are dropped.
 void resetCovariance(const EkfConfig& config, FilterState* s);
 
 }  // namespace deepnav

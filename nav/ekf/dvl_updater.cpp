@@ -22,6 +22,28 @@ bool isValidDvl(const DvlSample& m) {
   return true;
 }
 
+namespace {
+
+// The DVL's systematic errors (systematic_states.h), when estimated: with y = R_dr u the velocity in the
+// nominal DVL axes and M = (1 + s) Exp(-alpha), the prediction becomes M y and every Jacobian block
+// M times the one without them, plus
+//   H_s = Exp(-alpha) y,  H_alpha = (1 + s) Exp(-alpha) [y]x Jr(-alpha)   (Exp(-alpha - d) ~= Exp(-alpha) (I - [Jr(-alpha) d]x)).
+void addDvlSystematic(const FilterState& s, const Eigen::Vector3d& y, Linearization* out) {
+  const SystematicLayout& l = s.sys_layout;
+  const double scale = 1.0 + s.x.sys.dvl_scale;
+  const Eigen::Vector3d& alpha = s.x.sys.dvl_misalignment_rad;
+  const Eigen::Matrix3d E = expSo3(-alpha);
+  const Eigen::Matrix3d M = scale * E;
+  out->H.block(0, 0, 3, s.dim()) = (M * out->H.block(0, 0, 3, s.dim())).eval();
+  out->residual.head<3>() += y - M * y;  // the residual was taken against y
+  if (l.dvl_scale >= 0) out->H.block<3, 1>(0, s.sysIndex(l.dvl_scale)) = E * y;
+  if (l.dvl_misalignment >= 0) {
+    out->H.block<3, 3>(0, s.sysIndex(l.dvl_misalignment)) = scale * E * skew(y) * rightJacobianSo3(-alpha);
+  }
+}
+
+}  // namespace
+
 bool linearizeDvl(const FilterState& s, const DvlSample& m, const EkfConfig& c, Linearization* out) {
   const Eigen::Matrix3d R_dvl_robot = c.q_robot_dvl.toRotationMatrix().transpose();
   const Eigen::Matrix3d Rt = s.x.q_odom_robot.toRotationMatrix().transpose();
@@ -34,6 +56,7 @@ bool linearizeDvl(const FilterState& s, const DvlSample& m, const EkfConfig& c, 
   out->H.block<3, 3>(0, es::kV) = R_dvl_robot * Rt;
   out->H.block<3, 3>(0, es::kTheta) = R_dvl_robot * Rt * skew(v);
   out->H.block<3, 3>(0, es::kBg) = R_dvl_robot * skew(r);
+  if (s.sys_layout.dvl_scale >= 0 || s.sys_layout.dvl_misalignment >= 0) addDvlSystematic(s, v_pred, out);
   if (m.cov_v_dvl_mps2.diagonal().minCoeff() > 0.0) {
     out->R = m.cov_v_dvl_mps2;
   } else {

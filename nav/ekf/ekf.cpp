@@ -1,9 +1,11 @@
 #include "nav/ekf/ekf.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include "nav/ekf/attitude_updater.h"
+#include "nav/ekf/bias_gauss_markov.h"
 #include "nav/ekf/depth_updater.h"
 #include "nav/ekf/dvl_updater.h"
 #include "nav/ekf/gate_reset.h"
@@ -26,12 +28,16 @@ UpdateOutcome refused() { return {false, std::numeric_limits<double>::infinity()
 // garbage passes that by chance with probability ~ (gate window / sensor range)^5.
 constexpr int kGateResetSmoothSamples = 5;
 
+// Per-fusion diagnostics held between two loop ticks: a tick sees a few tens of measurements at most.
+constexpr int kDiagnosticsCapacity = 256;
+
 }  // namespace
 
 bool Ekf::init(const EkfConfig& config, std::string* error) {
   initialised_ = false;
   if (!validateEkfConfig(config, error)) return false;
-  if (!history_.allocate(config.history_imu_capacity) || !log_.allocate(config.history_meas_capacity)) {
+  if (!history_.allocate(config.history_imu_capacity) || !log_.allocate(config.history_meas_capacity) ||
+      !diagnostics_.allocate(kDiagnosticsCapacity)) {
     if (error != nullptr) *error = "EkfConfig.history_imu_capacity: allocation failed";
     return false;
   }
@@ -44,6 +50,7 @@ bool Ekf::init(const EkfConfig& config, std::string* error) {
   gate_pose_ = makeGateThresholds(config.gate_pose_sigma);
   gate_relative_ = makeGateThresholds(config.gate_relative_pose_sigma);
   health_.configure(config);
+  mag_.configure(magDisturbanceParams(config));
   alignment_.clear();
   state_ = FilterState{};
   resetCovariance(config_, &state_);
@@ -67,7 +74,9 @@ bool Ekf::reset(TimeUs t_us, const EkfInitialState& initial) {
   state_.x.q_odom_robot.normalize();
   state_.has_imu = false;
   state_.w_robot_meas_radps.setZero();
+  state_.last_pose_fused_t_us = -1;
   resetCovariance(config_, &state_);
+  mag_.restart();
   if (!initial.P.isZero(0.0)) {
     state_.P.topLeftCorner<es::kCoreDim, es::kCoreDim>() = 0.5 * (initial.P + initial.P.transpose());
   }
@@ -175,9 +184,11 @@ void Ekf::stepImu(const ImuSample& sample, FilterState* snapshot) {
 void Ekf::propagateTo(TimeUs t_us, const RobotImu& u) {
   const double dt_s = usToS(t_us - state_.t_us);
   if (dt_s <= 0.0) return;
-  const CoreMatrix Phi = propagationJacobian(state_.x, u, dt_s);
+  CoreMatrix Phi = propagationJacobian(state_.x, u, dt_s);
+  CoreMatrix Q = propagationNoise(config_, dt_s);
   state_.x = propagateNominal(state_.x, u, dt_s, config_.gravity_mps2);
-  propagateCovariance(Phi, propagationNoise(config_, dt_s), &state_);
+  if (biasGaussMarkovEnabled(config_)) applyBiasGaussMarkov(config_, dt_s, &Phi, &Q, &state_.x);
+  propagateCovariance(Phi, Q, &state_);
   state_.t_us = t_us;
   finishStep(es::kCoreDim);
 }
@@ -209,19 +220,20 @@ NavSource Ekf::sourceOf(const MeasurementPayload& p) const {
 UpdateOutcome Ekf::applyPayload(const MeasurementPayload& p) {
   Linearization lin;
   if (const auto* m = std::get_if<DvlSample>(&p)) {
-    return linearizeDvl(state_, *m, config_, &lin) ? gateAndUpdate(lin, gate_dvl_, &state_) : refused();
+    return linearizeDvl(state_, *m, config_, &lin) ? gateAndUpdate(considerUnaided(&lin), gate_dvl_, &state_)
+                                                   : refused();
   }
   if (const auto* m = std::get_if<DepthSample>(&p)) {
-    return linearizeDepth(state_, *m, config_, &lin) ? gateAndUpdate(lin, gate_depth_, &state_) : refused();
-  }
-  if (const auto* m = std::get_if<HeadingSample>(&p)) {
-    return linearizeHeading(state_, *m, config_, &lin) ? gateAndUpdate(lin, gate_heading_, &state_) : refused();
+    return linearizeDepth(state_, *m, config_, &lin) ? gateAndUpdate(considerUnaided(&lin), gate_depth_, &state_)
+                                                     : refused();
   }
   if (const auto* m = std::get_if<AttitudeSample>(&p)) {
-    return linearizeAttitude(state_, *m, config_, &lin) ? gateAndUpdate(lin, gate_attitude_, &state_) : refused();
+    return linearizeAttitude(state_, *m, config_, &lin)
+               ? gateAndUpdate(considerUnaided(&lin), gate_attitude_, &state_)
+               : refused();
   }
   if (const auto* m = std::get_if<PoseMeasurement>(&p)) {
-    return linearizePose(state_, *m, &lin) ? gateAndUpdate(lin, gate_pose_, &state_) : refused();
+    return notePoseFused(m->t_us, linearizePose(state_, *m, &lin) ? gateAndUpdate(lin, gate_pose_, &state_) : refused());
   }
   if (const auto* m = std::get_if<RelativePoseMeasurement>(&p)) return applyRelativePose(*m);
   if (const auto* m = std::get_if<CloneRequest>(&p)) {
@@ -242,18 +254,89 @@ UpdateOutcome Ekf::applyRelativePose(const RelativePoseMeasurement& m) {
   const UpdateOutcome out =
       linearizeRelativePose(state_, m, &lin) ? gateAndUpdate(lin, gate_relative_, &state_) : refused();
   if (m.release_clone) marginaliseClone(m.clone_id, &state_);
+  return notePoseFused(m.t_us, out);
+}
+
+// Systematic states (systematic_states.h) are observable only with an absolute or relative pose: without
+// one recently, DVL, depth, compass and AHRS updates treat them as Schmidt consider states (their
+// uncertainty counted, never corrected), so that weakly observable directions do not soak up model errors.
+Linearization& Ekf::considerUnaided(Linearization* lin) const {
+  const TimeUs last = state_.last_pose_fused_t_us;
+  const bool aided = last >= 0 && state_.t_us - last <= config_.position_aided_timeout_us;
+  if (state_.sys_layout.dim > 0 && !aided) {
+    lin->consider_begin = state_.sysOffset();
+    lin->consider_count = state_.sys_layout.dim;
+  }
+  return *lin;
+}
+
+UpdateOutcome Ekf::notePoseFused(TimeUs t_us, const UpdateOutcome& out) {
+  if (out.accepted) state_.last_pose_fused_t_us = std::max(state_.last_pose_fused_t_us, t_us);
   return out;
+}
+
+// The compass through the magnetic-disturbance detector (mag_disturbance.h). The decision is taken at the
+// sample's first fusion and kept in the log, so a re-fusion after a rewind repeats it.
+UpdateOutcome Ekf::applyHeading(LoggedMeasurement& e) {
+  Linearization lin;
+  if (!linearizeHeading(state_, std::get<HeadingSample>(e.payload), config_, &lin)) return refused();
+  if (e.mag_action == MagAction::kUndecided) e.mag_action = judgeCompass(e.t_us, lin);
+  if (e.mag_action == MagAction::kRefuse) return gateOnly(lin, gate_heading_, state_);
+  if (e.mag_action == MagAction::kDeweight) lin.R *= mag_.rScale();
+  return gateAndUpdate(considerUnaided(&lin), gate_heading_, &state_);
+}
+
+// Yaw variance predicted at the compass, H P H^T, against the compass variance R (one row, nominal R),
+// and whether a marker pose (the absolute heading reference) was fused within the aided window.
+MagAction Ekf::judgeCompass(TimeUs t_us, const Linearization& lin) {
+  if (!mag_.enabled()) return MagAction::kFuse;
+  const int n = state_.dim();
+  const double hph = lin.H.row(0).head(n).dot(state_.P.topLeftCorner(n, n) * lin.H.row(0).head(n).transpose());
+  const bool pose_aided = health_.acceptedWithin(kSrcMarkers, t_us, config_.mag_disturbance_aided_window_us);
+  return mag_.update(t_us, lin.residual(0), hph, lin.R(0, 0), pose_aided);
+}
+
+void Ekf::noteDiagnostic(const LoggedMeasurement& e, NavSource src, const UpdateOutcome& r) {
+  FusionDiagnostic d;
+  d.t_us = e.t_us;
+  d.source = src;
+  d.dim = static_cast<std::uint8_t>(r.m);
+  d.innovation = r.innovation;
+  d.innovation_variance = r.innovation_variance;
+  d.test_ratio = r.test_ratio;
+  d.mag_state = static_cast<std::uint8_t>(mag_.state());
+  if (r.accepted) {
+    d.reason = e.mag_action == MagAction::kDeweight ? FusionReason::kFusedDeweighted : FusionReason::kFused;
+  } else if (e.mag_action == MagAction::kRefuse) {
+    d.reason = FusionReason::kMagDisturbance;
+  } else {
+    d.reason = r.m > 0 && std::isfinite(r.test_ratio) ? FusionReason::kGate : FusionReason::kUnusable;
+  }
+  diagnostics_.push(d);
+}
+
+void Ekf::noteRefusedAtDoor(TimeUs t_us, NavSource src, FusionReason reason) {
+  if (src == kSrcCount) return;
+  FusionDiagnostic d;
+  d.t_us = t_us;
+  d.source = src;
+  d.reason = reason;
+  d.mag_state = static_cast<std::uint8_t>(mag_.state());
+  diagnostics_.push(d);
 }
 
 void Ekf::applyMeasurement(LoggedMeasurement& e) {
   const FuseStatus previous = e.outcome;
-  const UpdateOutcome r = applyPayload(e.payload);
+  const bool heading = std::holds_alternative<HeadingSample>(e.payload);
+  const UpdateOutcome r = heading ? applyHeading(e) : applyPayload(e.payload);
   finishStep(state_.dim());
   e.outcome = r.accepted ? FuseStatus::kAccepted : FuseStatus::kRejected;
+  if (!r.accepted && e.mag_action == MagAction::kRefuse) e.outcome = FuseStatus::kRefused;
   e.test_ratio = r.test_ratio;
   const NavSource src = sourceOf(e.payload);
   if (src != kSrcCount) {
     health_.record(src, previous, e.outcome, e.t_us, e.test_ratio);
+    if (previous == FuseStatus::kQueued) noteDiagnostic(e, src, r);
   } else if ((previous == FuseStatus::kRejected) != (e.outcome == FuseStatus::kRejected)) {
     e.outcome == FuseStatus::kRejected ? ++counters_.clone_failures : --counters_.clone_failures;
   }
@@ -271,6 +354,7 @@ FuseResult Ekf::submit(const LoggedMeasurement& e, NavSource src, bool valid) {
   if (!initialised_) return {FuseStatus::kNotAligned, 0.0};
   if (!valid) {
     if (src != kSrcCount) health_.countBadInput(src);
+    noteRefusedAtDoor(e.t_us, src, FusionReason::kBadInput);
     return {FuseStatus::kBadInput, 0.0};
   }
   noteInputTime(e.t_us);
@@ -279,6 +363,7 @@ FuseResult Ekf::submit(const LoggedMeasurement& e, NavSource src, bool valid) {
     int index = -1;
     if (insertWithEviction(e, &index)) return {FuseStatus::kQueued, 0.0};
     if (src != kSrcCount) health_.countDroppedLate(src);
+    noteRefusedAtDoor(e.t_us, src, FusionReason::kLate);
     return {FuseStatus::kDroppedLate, 0.0};
   }
   return fuseLate(e, src);
@@ -290,12 +375,14 @@ FuseResult Ekf::fuseLate(const LoggedMeasurement& e, NavSource src) {
   int index = -1;
   if (too_old || history_.empty() || e.t_us < history_.timeAt(0) || !insertWithEviction(e, &index)) {
     if (src != kSrcCount) health_.countDroppedLate(src);
+    noteRefusedAtDoor(e.t_us, src, FusionReason::kLate);
     return dropped;
   }
   const int base = history_.latestAtOrBefore(e.t_us);
   if (base < 0) {  // the eviction above took the snapshot away; the entry is trimmed with the window
     log_.at(index).outcome = FuseStatus::kDroppedLate;
     if (src != kSrcCount) health_.countDroppedLate(src);
+    noteRefusedAtDoor(e.t_us, src, FusionReason::kLate);
     return dropped;
   }
   ++counters_.replays;
@@ -341,7 +428,10 @@ void Ekf::trimHistory() {
 bool Ekf::admitAidingSample(NavSource src, TimeUs t_us, std::uint64_t fingerprint, const Eigen::Vector3d& value,
                             bool angles, double tolerance) {
   if (!initialised_) return true;
-  if (health_.noteFrozen(src, fingerprint, config_.stuck_after_samples)) return false;
+  if (health_.noteFrozen(src, fingerprint, config_.stuck_after_samples)) {
+    if (aligned_) noteRefusedAtDoor(t_us, src, FusionReason::kFrozen);
+    return false;
+  }
   Eigen::Vector3d change = value - health_.source(src).last_value;
   if (angles) {
     for (int i = 0; i < 3; ++i) change[i] = wrapPi(change[i]);

@@ -9,7 +9,9 @@
 #include "nav/ekf/ekf_measurements.h"
 #include "nav/ekf/filter_state.h"
 #include "nav/ekf/fuse_result.h"
+#include "nav/ekf/fusion_diagnostic.h"
 #include "nav/ekf/initial_alignment.h"
+#include "nav/ekf/mag_disturbance.h"
 #include "nav/ekf/innovation_gate.h"
 #include "nav/ekf/measurement_log.h"
 #include "nav/ekf/measurement_update.h"
@@ -87,6 +89,11 @@ class Ekf {
   const SourceHealth& health(NavSource src) const { return health_.source(src); }
   const EkfCounters& counters() const { return counters_; }
   const EkfConfig& config() const { return config_; }
+  // Compass health against magnetic disturbance: state, decisions and their counters.
+  const MagDisturbanceDetector& magDisturbance() const { return mag_; }
+  // Per-fusion diagnostics since the last clearDiagnostics() (the loop records and clears them every tick).
+  const FusionDiagnosticBuffer& diagnostics() const { return diagnostics_; }
+  void clearDiagnostics() { diagnostics_.clear(); }
 
  private:
   FuseResult submit(const LoggedMeasurement& e, NavSource src, bool valid);
@@ -98,6 +105,12 @@ class Ekf {
   void applyMeasurement(LoggedMeasurement& e);
   UpdateOutcome applyPayload(const MeasurementPayload& payload);
   UpdateOutcome applyRelativePose(const RelativePoseMeasurement& m);
+  Linearization& considerUnaided(Linearization* lin) const;
+  UpdateOutcome notePoseFused(TimeUs t_us, const UpdateOutcome& out);
+  UpdateOutcome applyHeading(LoggedMeasurement& e);
+  MagAction judgeCompass(TimeUs t_us, const Linearization& lin);
+  void noteDiagnostic(const LoggedMeasurement& e, NavSource src, const UpdateOutcome& r);
+  void noteRefusedAtDoor(TimeUs t_us, NavSource src, FusionReason reason);
   void finishStep(int sym_dim);
   void trimHistory();
   void alignFromImu(const ImuSample& sample);
@@ -129,6 +142,8 @@ class Ekf {
   InitialAlignment alignment_;
   SourceHealthMonitor health_;
   EkfCounters counters_;
+  MagDisturbanceDetector mag_;
+  FusionDiagnosticBuffer diagnostics_;
   std::uint64_t next_seq_ = 0;
   TimeUs last_imu_t_us_ = 0;
   TimeUs latest_input_t_us_ = 0;

@@ -63,6 +63,28 @@ bool checkBounds(const EkfConfig& c, std::string* e) {
   return true;
 }
 
+bool checkMagDisturbance(const EkfConfig& c, std::string* e) {
+  if (!positive(c.mag_disturbance_tau_s) || c.mag_disturbance_tau_s > 600.0) {
+    return fail(e, "mag_disturbance_tau_s", "must be in (0, 600]");
+  }
+  if (!positive(c.mag_disturbance_exit_sigma)) return fail(e, "mag_disturbance_exit_sigma", "must be > 0");
+  if (!(c.mag_disturbance_suspect_sigma > c.mag_disturbance_exit_sigma) ||
+      !std::isfinite(c.mag_disturbance_suspect_sigma)) {
+    return fail(e, "mag_disturbance_suspect_sigma", "must be finite and > mag_disturbance_exit_sigma");
+  }
+  if (!(c.mag_disturbance_enter_sigma >= c.mag_disturbance_suspect_sigma) ||
+      !std::isfinite(c.mag_disturbance_enter_sigma)) {
+    return fail(e, "mag_disturbance_enter_sigma", "must be finite and >= mag_disturbance_suspect_sigma");
+  }
+  if (c.mag_disturbance_exit_hold_us < 0) return fail(e, "mag_disturbance_exit_hold_us", "must be >= 0");
+  if (!(c.mag_disturbance_r_scale >= 1.0) || !std::isfinite(c.mag_disturbance_r_scale)) {
+    return fail(e, "mag_disturbance_r_scale", "must be finite and >= 1");
+  }
+  if (!positive(c.mag_disturbance_yaw_held_ratio)) return fail(e, "mag_disturbance_yaw_held_ratio", "must be > 0");
+  if (c.mag_disturbance_aided_window_us <= 0) return fail(e, "mag_disturbance_aided_window_us", "must be > 0");
+  return true;
+}
+
 bool checkMeasurements(const EkfConfig& c, std::string* e) {
   if (!positive(c.dvl_sigma_mps)) return fail(e, "dvl_sigma_mps", "must be > 0");
   if (!positive(c.depth_sigma_m)) return fail(e, "depth_sigma_m", "must be > 0");
@@ -70,12 +92,41 @@ bool checkMeasurements(const EkfConfig& c, std::string* e) {
   if (!positive(c.attitude_sigma_rad)) return fail(e, "attitude_sigma_rad", "must be > 0");
   if (!std::isfinite(c.magnetic_declination_rad)) return fail(e, "magnetic_declination_rad", "must be finite");
   if (!std::isfinite(c.heading_bias_rad)) return fail(e, "heading_bias_rad", "must be finite");
+  if (!checkMagDisturbance(c, e)) return false;
   if (!positive(c.gate_dvl_sigma)) return fail(e, "gate_dvl_sigma", "must be > 0");
   if (!positive(c.gate_depth_sigma)) return fail(e, "gate_depth_sigma", "must be > 0");
   if (!positive(c.gate_heading_sigma)) return fail(e, "gate_heading_sigma", "must be > 0");
   if (!positive(c.gate_attitude_sigma)) return fail(e, "gate_attitude_sigma", "must be > 0");
   if (!positive(c.gate_pose_sigma)) return fail(e, "gate_pose_sigma", "must be > 0");
   if (!positive(c.gate_relative_pose_sigma)) return fail(e, "gate_relative_pose_sigma", "must be > 0");
+  return true;
+}
+
+bool checkSystematic(const EkfConfig& c, std::string* e) {
+  if (!nonNegative(c.dvl_scale_prior_sigma) || c.dvl_scale_prior_sigma > 0.2) {
+    return fail(e, "dvl_scale_prior_sigma", "must be in [0, 0.2]");
+  }
+  if (!nonNegative(c.dvl_misalignment_prior_sigma_rad) || c.dvl_misalignment_prior_sigma_rad > 0.2) {
+    return fail(e, "dvl_misalignment_prior_sigma_rad", "must be in [0, 0.2] rad");
+  }
+  if (!nonNegative(c.heading_bias_prior_sigma_rad) || c.heading_bias_prior_sigma_rad > 0.5) {
+    return fail(e, "heading_bias_prior_sigma_rad", "must be in [0, 0.5] rad");
+  }
+  if (!nonNegative(c.heading_deviation_prior_sigma_rad) || c.heading_deviation_prior_sigma_rad > 0.5) {
+    return fail(e, "heading_deviation_prior_sigma_rad", "must be in [0, 0.5] rad");
+  }
+  if (!nonNegative(c.heading_sigma_floor_rad) || c.heading_sigma_floor_rad > 1.0) {
+    return fail(e, "heading_sigma_floor_rad", "must be in [0, 1] rad");
+  }
+  const auto tau_ok = [](double tau) { return tau == 0.0 || (std::isfinite(tau) && tau >= 1.0 && tau <= 1e6); };
+  if (!tau_ok(c.gyro_bias_gm_tau_s)) return fail(e, "gyro_bias_gm_tau_s", "must be 0 (off) or in [1, 1e6] s");
+  if (!tau_ok(c.accel_bias_gm_tau_s)) return fail(e, "accel_bias_gm_tau_s", "must be 0 (off) or in [1, 1e6] s");
+  if (!nonNegative(c.gyro_bias_gm_sigma_radps) || c.gyro_bias_gm_sigma_radps > 0.1) {
+    return fail(e, "gyro_bias_gm_sigma_radps", "must be in [0, 0.1] rad/s");
+  }
+  if (!nonNegative(c.accel_bias_gm_sigma_mps2) || c.accel_bias_gm_sigma_mps2 > 1.0) {
+    return fail(e, "accel_bias_gm_sigma_mps2", "must be in [0, 1] m/s^2");
+  }
   return true;
 }
 
@@ -111,7 +162,8 @@ bool checkTiming(const EkfConfig& c, std::string* e) {
 
 bool validateEkfConfig(const EkfConfig& config, std::string* error) {
   return checkGeometry(config, error) && checkImu(config, error) && checkInitial(config, error) &&
-         checkBounds(config, error) && checkMeasurements(config, error) && checkTiming(config, error);
+         checkBounds(config, error) && checkMeasurements(config, error) && checkSystematic(config, error) &&
+         checkTiming(config, error);
 }
 
 }  // namespace deepnav

@@ -63,6 +63,32 @@ struct EkfConfig {
   double magnetic_declination_rad = 0.0;  // true = magnetic + declination (east positive)
   double heading_bias_rad = 0.0;          // measured = true + bias; subtracted before fusion
 
+  // --- Magnetic disturbance (mag_disturbance.h): off by default --------------------------------------
+  bool mag_disturbance_enabled = false;
+  double mag_disturbance_tau_s = 3.0;          // low-pass time constant of the normalised innovation, (0, 600]
+  double mag_disturbance_suspect_sigma = 1.0;  // |mean| above: compass de-weighted (R x r_scale)
+  double mag_disturbance_enter_sigma = 2.0;    // |mean| above: compass refused; >= suspect
+  double mag_disturbance_exit_sigma = 0.5;     // |mean| below this for exit_hold: clean again; < suspect
+  TimeUs mag_disturbance_exit_hold_us = 3'000'000;
+  double mag_disturbance_r_scale = 25.0;       // compass variance factor while suspect, >= 1
+  double mag_disturbance_yaw_held_ratio = 1.0; // judged only while H P H^T < this x R (yaw held), > 0
+  TimeUs mag_disturbance_aided_window_us = 2'000'000;  // ... and a marker pose was fused this recently, > 0
+
+  // --- Systematic error states (systematic_states.h): a prior 1-sigma of 0 leaves the state out -------
+  double dvl_scale_prior_sigma = 0.0;              // DVL scale factor s (v_meas = (1 + s) v), fraction
+  double dvl_misalignment_prior_sigma_rad = 0.0;   // DVL mounting rotation, each of 3 axes, rad
+  double heading_bias_prior_sigma_rad = 0.0;       // compass residual bias, rad
+  double heading_deviation_prior_sigma_rad = 0.0;  // each of the deviation terms B, C, D, E, rad
+  // Compass samples' sigma raised to at least this (their white noise may be far below the datasheet's
+  // accuracy); 0: the sample's own sigma.
+  double heading_sigma_floor_rad = 0.0;
+
+  // --- IMU biases as first-order Gauss-Markov processes (bias_gauss_markov.h); tau 0: random walk only ---
+  double gyro_bias_gm_tau_s = 0.0;         // correlation time T_c, s, 0 or [1, 1e6]
+  double gyro_bias_gm_sigma_radps = 0.0;   // steady-state 1-sigma (bias instability / 0.6174)
+  double accel_bias_gm_tau_s = 0.0;
+  double accel_bias_gm_sigma_mps2 = 0.0;
+
   // --- Innovation gates, in sigma: ratio = innov^2 / (gate^2 S) for one dof; for n dof see
   //     innovation_gate.h (chi-square quantile of the same tail probability + per-axis test) ---------
   double gate_dvl_sigma = 3.0;

@@ -4,7 +4,10 @@
 namespace deepnav {
 
 // Layout of the error state (the filter estimates the error of the nominal state, not the state):
-//   [ dp (3) | dv (3) | dtheta (3) | dbg (3) | dba (3) | clone 0: dp, dtheta (6) | clone 1 ... ]
+//   [ dp (3) | dv (3) | dtheta (3) | dbg (3) | dba (3) | clone 0: dp, dtheta (6) | clone 1 ... | systematic ]
+// The systematic block (systematic_states.h: DVL scale factor and misalignment, compass bias and
+// deviation) holds only the states the board switches on, in a fixed order, right after the clones in
+// use; with none on the layout is the 15-state core plus clones, exactly as without the block.
 // dtheta is a rotation error about the odometry axes (a left perturbation): R = Exp(dtheta) * R_hat,
 // so the attitude covariance is directly the ROS [roll pitch yaw] block about fixed odom axes.
 // The clone errors use the same convention. Sizes are compile-time so that nothing allocates after
@@ -18,7 +21,8 @@ constexpr int kBa = 12;
 constexpr int kCoreDim = 15;
 constexpr int kCloneDim = 6;       // [dp, dtheta] of one cloned pose
 constexpr int kMaxClones = 4;      // compile-time cap; EkfConfig::max_clones chooses up to this
-constexpr int kMaxDim = kCoreDim + kCloneDim * kMaxClones;
+constexpr int kMaxSysDim = 9;      // DVL scale 1 + DVL misalignment 3 + compass bias 1 + deviation 4
+constexpr int kMaxDim = kCoreDim + kCloneDim * kMaxClones + kMaxSysDim;
 constexpr int kMaxMeasDim = 6;     // largest measurement (6-DoF pose)
 
 constexpr int cloneOffset(int slot) { return kCoreDim + kCloneDim * slot; }

@@ -5,6 +5,18 @@
 #include "nav/ekf/so3.h"
 
 namespace deepnav {
+namespace {
+
+void injectSystematic(const ErrorVector& dx, FilterState* s) {
+  const SystematicLayout& l = s->sys_layout;
+  SystematicErrors& e = s->x.sys;
+  if (l.dvl_scale >= 0) e.dvl_scale += dx(s->sysIndex(l.dvl_scale));
+  if (l.dvl_misalignment >= 0) e.dvl_misalignment_rad += dx.segment<3>(s->sysIndex(l.dvl_misalignment));
+  if (l.heading_bias >= 0) e.heading_bias_rad += dx(s->sysIndex(l.heading_bias));
+  if (l.heading_deviation >= 0) e.heading_deviation_rad += dx.segment<4>(s->sysIndex(l.heading_deviation));
+}
+
+}  // namespace
 
 void copyFilterState(const FilterState& src, FilterState* dst) {
   dst->t_us = src.t_us;
@@ -13,6 +25,8 @@ void copyFilterState(const FilterState& src, FilterState* dst) {
   dst->n_clones = src.n_clones;
   dst->w_robot_meas_radps = src.w_robot_meas_radps;
   dst->has_imu = src.has_imu;
+  dst->sys_layout = src.sys_layout;
+  dst->last_pose_fused_t_us = src.last_pose_fused_t_us;
   const int n = src.dim();
   dst->P.topLeftCorner(n, n) = src.P.topLeftCorner(n, n);
 }
@@ -35,11 +49,15 @@ void injectErrorState(const ErrorVector& dx, FilterState* s) {
     c.p_robot_in_odom_m += dx.segment<3>(o);
     c.q_odom_robot = (expSo3Quat(dx.segment<3>(o + 3)) * c.q_odom_robot).normalized();
   }
+  if (s->sys_layout.dim > 0) injectSystematic(dx, s);
 }
+
 
 bool isFiniteState(const FilterState& s) {
   if (!s.x.p_robot_in_odom_m.allFinite() || !s.x.v_robot_in_odom_mps.allFinite() ||
-      !s.x.q_odom_robot.coeffs().allFinite() || !s.x.b_gyro_radps.allFinite() || !s.x.b_accel_mps2.allFinite()) {
+      !s.x.q_odom_robot.coeffs().allFinite() || !s.x.b_gyro_radps.allFinite() || !s.x.b_accel_mps2.allFinite() ||
+      !std::isfinite(s.x.sys.dvl_scale + s.x.sys.dvl_misalignment_rad.sum() + s.x.sys.heading_bias_rad +
+                     s.x.sys.heading_deviation_rad.sum())) {
     return false;
   }
   for (int i = 0; i < s.n_clones; ++i) {

@@ -10,6 +10,26 @@
 
 namespace deepnav {
 
+// Systematic sensor errors, nominal values (systematic_states.h gives the models); zero when not estimated.
+struct SystematicErrors {
+  double dvl_scale = 0.0;  // v_measured = (1 + s) v_true (sound-speed error)
+  // Residual DVL mounting rotation as a rotation vector: R_robot_dvl_true = R_robot_dvl Exp(alpha).
+  Eigen::Vector3d dvl_misalignment_rad = Eigen::Vector3d::Zero();
+  double heading_bias_rad = 0.0;  // compass residual bias (with the deviation's constant term A)
+  // Deviation terms [B, C, D, E] of B sin psi + C cos psi + D sin 2psi + E cos 2psi, psi magnetic heading.
+  Eigen::Vector4d heading_deviation_rad = Eigen::Vector4d::Zero();
+};
+
+// Offsets of the estimated systematic states inside the systematic block (-1: not estimated), fixed at
+// init from the config; dim is the block's size.
+struct SystematicLayout {
+  int dvl_scale = -1;
+  int dvl_misalignment = -1;
+  int heading_bias = -1;
+  int heading_deviation = -1;
+  int dim = 0;
+};
+
 // Nominal (best-estimate) state of the robot in the odometry frame (ENU, REP-105). Biases are expressed
 // in the robot frame (FLU), i.e. after the IMU mounting rotation.
 struct NominalState {
@@ -18,6 +38,7 @@ struct NominalState {
   Eigen::Quaterniond q_odom_robot = Eigen::Quaterniond::Identity();
   Eigen::Vector3d b_gyro_radps = Eigen::Vector3d::Zero();
   Eigen::Vector3d b_accel_mps2 = Eigen::Vector3d::Zero();
+  SystematicErrors sys;
 };
 
 // A stochastic clone: the pose of the robot at an earlier time (an image capture), kept in the state so
@@ -40,16 +61,24 @@ struct FilterState {
   // and by the next step's angular acceleration.
   Eigen::Vector3d w_robot_meas_radps = Eigen::Vector3d::Zero();
   bool has_imu = false;
+  SystematicLayout sys_layout;
+  // Capture time of the last accepted absolute or relative pose (markers, VO); -1 none. The systematic
+  // states are corrected only while this is recent (Ekf::considerUnaided).
+  TimeUs last_pose_fused_t_us = -1;
   CovMatrix P = CovMatrix::Zero();  // only the top-left dim() x dim() block is meaningful
 
-  int dim() const { return es::kCoreDim + es::kCloneDim * n_clones; }
+  int sysOffset() const { return es::kCoreDim + es::kCloneDim * n_clones; }
+  // Index in the error state of a systematic state at layout offset rel; -1 when it is not estimated.
+  int sysIndex(int rel) const { return rel < 0 ? -1 : sysOffset() + rel; }
+  int dim() const { return sysOffset() + sys_layout.dim; }
 };
 
 // Copies src into dst, the covariance only over its used block (a full copy is 12 kB).
 void copyFilterState(const FilterState& src, FilterState* dst);
 
 // Applies an error-state correction to the nominal state (the retraction):
-//   p += dp, v += dv, R = Exp(dtheta) R, bg += dbg, ba += dba, and likewise for each clone.
+//   p += dp, v += dv, R = Exp(dtheta) R, bg += dbg, ba += dba, and likewise for each clone; the
+// systematic states estimated add their corrections.
 void injectErrorState(const ErrorVector& dx, FilterState* s);
 
 // Same retraction for the core state only, as used by the Jacobian tests.

@@ -13,6 +13,9 @@ bool isValidHeading(const HeadingSample& m);
 //   yaw_meas = pi/2 - (heading + declination - bias)        (declination only for magnetic headings)
 // Model: yaw(R) = atan2(R10, R00) (ZYX Euler). With c = R_hat e_x and R = Exp(dtheta) R_hat,
 //   H_theta = [ -c0 c2, -c1 c2, c0^2 + c1^2 ] / (c0^2 + c1^2);  residual wrapped to [-pi, pi).
+// With the compass bias b and deviation B..E estimated (systematic_states.h) the model is
+// yaw_meas = yaw - (b + B sin psi + C cos psi + D sin 2psi + E cos 2psi), psi the magnetic heading.
+// Noise: the sample's sigma (else heading_sigma_rad), raised to heading_sigma_floor_rad.
 // Returns false near pitch +-90 deg, where yaw is undefined.
 bool linearizeHeading(const FilterState& s, const HeadingSample& m, const EkfConfig& config, Linearization* out);
 

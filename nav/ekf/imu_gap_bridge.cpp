@@ -3,13 +3,22 @@
 #include <algorithm>
 
 #include "nav/ekf/ekf_config.h"
+#include "nav/ekf/systematic_states.h"
 
 namespace deepnav {
 
 void bridgeImuGap(double dt_s, const EkfConfig& c, FilterState* s) {
+  relocateSystematic(es::kCoreDim, s);  // the clones are dropped
   s->n_clones = 0;
   CoreMatrix Phi = CoreMatrix::Identity();
   Phi.block<3, 3>(es::kP, es::kV) = Eigen::Matrix3d::Identity() * dt_s;
+  const int ns = s->sys_layout.dim;
+  if (ns > 0) {
+    using Cross = Eigen::Matrix<double, es::kCoreDim, Eigen::Dynamic, 0, es::kCoreDim, es::kMaxSysDim>;
+    const Cross X = Phi * s->P.block(0, es::kCoreDim, es::kCoreDim, ns);
+    s->P.block(0, es::kCoreDim, es::kCoreDim, ns) = X;
+    s->P.block(es::kCoreDim, 0, ns, es::kCoreDim) = X.transpose();
+  }
   CoreMatrix P = s->P.topLeftCorner<es::kCoreDim, es::kCoreDim>();
   P = (Phi * P * Phi.transpose()).eval();
   const double a2 = c.coast_accel_noise_mps2_rthz * c.coast_accel_noise_mps2_rthz;

@@ -1,23 +1,30 @@
 #include "nav/ekf/stochastic_clone.h"
 
 #include "nav/ekf/relative_pose_updater.h"
+#include "nav/ekf/systematic_states.h"
 
 namespace deepnav {
 
 CloneStatus augmentClone(std::uint32_t id, int max_clones, FilterState* s) {
   if (s->n_clones >= max_clones || s->n_clones >= es::kMaxClones) return CloneStatus::kFull;
   if (findCloneSlot(*s, id) >= 0) return CloneStatus::kDuplicateId;
-  const int n = s->dim();
-  const int o = n;  // offset of the new clone
+  // The new clone goes where the systematic block starts; that block moves behind it.
+  const int o = s->sysOffset();
+  const int ns = s->sys_layout.dim;
+  relocateSystematic(o + es::kCloneDim, s);
   PoseClone& c = s->clones[static_cast<std::size_t>(s->n_clones)];
   c.id = id;
   c.t_us = s->t_us;
   c.p_robot_in_odom_m = s->x.p_robot_in_odom_m;
   c.q_odom_robot = s->x.q_odom_robot;
   auto& P = s->P;
-  P.block(o, 0, 3, n) = P.block(es::kP, 0, 3, n);
-  P.block(o + 3, 0, 3, n) = P.block(es::kTheta, 0, 3, n);
-  P.block(0, o, n, 6) = P.block(o, 0, 6, n).transpose();
+  const int after = o + es::kCloneDim;  // columns of the systematic block, [after, after + ns)
+  P.block(o, 0, 3, o) = P.block(es::kP, 0, 3, o);
+  P.block(o + 3, 0, 3, o) = P.block(es::kTheta, 0, 3, o);
+  P.block(o, after, 3, ns) = P.block(es::kP, after, 3, ns);
+  P.block(o + 3, after, 3, ns) = P.block(es::kTheta, after, 3, ns);
+  P.block(0, o, o, 6) = P.block(o, 0, 6, o).transpose();
+  P.block(after, o, ns, 6) = P.block(o, after, 6, ns).transpose();
   P.block<3, 3>(o, o) = P.block<3, 3>(es::kP, es::kP);
   P.block<3, 3>(o, o + 3) = P.block<3, 3>(es::kP, es::kTheta);
   P.block<3, 3>(o + 3, o) = P.block<3, 3>(es::kTheta, es::kP);

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "nav/ekf/attitude_updater.h"
+#include "nav/ekf/bias_gauss_markov.h"
 #include "nav/ekf/depth_updater.h"
 #include "nav/ekf/dvl_updater.h"
 #include "nav/ekf/ekf_config.h"
@@ -18,6 +19,7 @@
 #include "nav/ekf/relative_pose_updater.h"
 #include "nav/ekf/so3.h"
 #include "nav/ekf/stochastic_clone.h"
+#include "nav/ekf/systematic_states.h"
 
 namespace deepnav {
 namespace {
@@ -235,6 +237,131 @@ TEST(EkfJacobian, CloneAugmentationIsJPJtAndMarginalisationUndoesIt) {
   }
   EXPECT_EQ(s.clones[1].id, 11u);
   EXPECT_EQ(marginaliseClone(9, &s), CloneStatus::kUnknownId);
+}
+
+// Every systematic state on (systematic_states.h), with non-zero nominal values, two clones behind
+// which the systematic block sits, and a random covariance.
+EkfConfig systematicConfig() {
+  EkfConfig c = mountedConfig();
+  c.dvl_scale_prior_sigma = 0.01;
+  c.dvl_misalignment_prior_sigma_rad = 0.02;
+  c.heading_bias_prior_sigma_rad = 0.01;
+  c.heading_deviation_prior_sigma_rad = 0.02;
+  return c;
+}
+
+FilterState randomSystematicState(std::mt19937_64& rng, const EkfConfig& c) {
+  std::normal_distribution<double> n(0.0, 1.0);
+  FilterState s;
+  s.sys_layout = systematicLayout(c);
+  s.x = randomNominal(rng);
+  s.x.sys.dvl_scale = 0.02 * n(rng);
+  s.x.sys.dvl_misalignment_rad = 0.1 * Eigen::Vector3d(n(rng), n(rng), n(rng));
+  s.x.sys.heading_bias_rad = 0.05 * n(rng);
+  s.x.sys.heading_deviation_rad = 0.05 * Eigen::Vector4d(n(rng), n(rng), n(rng), n(rng));
+  s.w_robot_meas_radps = Eigen::Vector3d(0.2, -0.3, 0.5);
+  for (std::uint32_t id : {7u, 9u}) EXPECT_EQ(augmentClone(id, es::kMaxClones, &s), CloneStatus::kOk);
+  const int n_dim = s.dim();
+  Eigen::MatrixXd A = Eigen::MatrixXd::Random(n_dim, n_dim);
+  s.P.topLeftCorner(n_dim, n_dim) = A * A.transpose() + Eigen::MatrixXd::Identity(n_dim, n_dim);
+  return s;
+}
+
+TEST(EkfJacobian, DvlWithScaleAndMisalignmentMatchesNumericDifferentiation) {
+  // GIVEN a turned DVL with a lever arm, a scale error and a misalignment of up to ~0.2 rad in the state
+  std::mt19937_64 rng(21);
+  const EkfConfig c = systematicConfig();
+  DvlSample m;
+  m.valid = true;
+  m.v_dvl_mps = Eigen::Vector3d(0.3, 0.1, -0.05);
+  for (int trial = 0; trial < 3; ++trial) {
+    const FilterState s = randomSystematicState(rng, c);
+    ASSERT_EQ(s.dim(), es::kCoreDim + 2 * es::kCloneDim + 9);
+    // WHEN / THEN the analytic H (scale and misalignment columns included) matches the numeric one
+    expectJacobianMatches(s, [&](const FilterState& st, Linearization* l) { return linearizeDvl(st, m, c, l); },
+                          1e-6);
+  }
+}
+
+TEST(EkfJacobian, HeadingWithBiasAndDeviationMatchesNumericDifferentiation) {
+  // GIVEN tilted attitudes, a compass bias and deviation terms of up to ~0.1 rad in the state
+  std::mt19937_64 rng(22);
+  const EkfConfig c = systematicConfig();
+  HeadingSample m;
+  m.heading_rad = 1.0;
+  for (bool is_true : {false, true}) {
+    m.is_true = is_true;
+    for (int trial = 0; trial < 3; ++trial) {
+      // WHEN / THEN the analytic H matches the numeric one (a true heading has no deviation columns)
+      expectJacobianMatches(randomSystematicState(rng, c),
+                            [&](const FilterState& st, Linearization* l) { return linearizeHeading(st, m, c, l); },
+                            1e-6);
+    }
+  }
+}
+
+TEST(EkfJacobian, CloneAugmentationMovesTheSystematicBlockBehindTheNewClone) {
+  // GIVEN a state with two clones and every systematic state
+  std::mt19937_64 rng(23);
+  const EkfConfig c = systematicConfig();
+  FilterState s = randomSystematicState(rng, c);
+  const int n = s.dim();
+  const int o = s.sysOffset();
+  const Eigen::MatrixXd P0 = s.P.topLeftCorner(n, n);
+  // WHEN a third clone is added
+  ASSERT_EQ(augmentClone(11, es::kMaxClones, &s), CloneStatus::kOk);
+  // THEN P_aug = J P J^T, J inserting the clone's rows (copies of dp, dtheta) before the systematic block
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(n + 6, n);
+  J.topLeftCorner(o, o).setIdentity();
+  J.block(o, es::kP, 3, 3).setIdentity();
+  J.block(o + 3, es::kTheta, 3, 3).setIdentity();
+  J.block(o + 6, o, n - o, n - o).setIdentity();
+  const Eigen::MatrixXd Paug = J * P0 * J.transpose();
+  EXPECT_TRUE(s.P.topLeftCorner(n + 6, n + 6).isApprox(Paug, 1e-12));
+  // AND marginalising the new clone gives the state back
+  ASSERT_EQ(marginaliseClone(11, &s), CloneStatus::kOk);
+  EXPECT_TRUE(s.P.topLeftCorner(n, n).isApprox(P0, 1e-12));
+}
+
+TEST(EkfJacobian, GaussMarkovBiasPropagationMatchesNumericDifferentiation) {
+  // GIVEN Gauss-Markov gyro and accelerometer biases with short correlation times (large decay per step)
+  std::mt19937_64 rng(24);
+  EkfConfig c;
+  c.gyro_bias_gm_tau_s = 2.0;
+  c.gyro_bias_gm_sigma_radps = 1e-4;
+  c.accel_bias_gm_tau_s = 5.0;
+  c.accel_bias_gm_sigma_mps2 = 1e-3;
+  RobotImu u;
+  u.w_robot_radps = Eigen::Vector3d(0.3, -0.5, 0.8);
+  u.f_robot_mps2 = Eigen::Vector3d(0.4, -0.2, 9.9);
+  const double dt = 0.5;
+  const auto step = [&](const NominalState& x) {
+    CoreMatrix Phi = CoreMatrix::Identity(), Q = CoreMatrix::Zero();
+    NominalState out = propagateNominal(x, u, dt, c.gravity_mps2);
+    applyBiasGaussMarkov(c, dt, &Phi, &Q, &out);
+    return out;
+  };
+  for (int trial = 0; trial < 3; ++trial) {
+    const NominalState x = randomNominal(rng);
+    CoreMatrix Phi = propagationJacobian(x, u, dt);
+    CoreMatrix Q = propagationNoise(c, dt);
+    NominalState unused = x;
+    applyBiasGaussMarkov(c, dt, &Phi, &Q, &unused);
+    // WHEN each error is perturbed and the nominal step (with the decay) repeated
+    const NominalState y0 = step(x);
+    for (int j = 0; j < es::kCoreDim; ++j) {
+      Vec15 dx = Vec15::Zero();
+      dx(j) = kEps;
+      const Vec15 col = (boxMinus(step(retractNominal(x, dx)), y0) - boxMinus(step(retractNominal(x, -dx)), y0)) /
+                        (2.0 * kEps);
+      // THEN Phi matches, the bias block being exp(-dt / tau)
+      for (int i = 0; i < es::kCoreDim; ++i) EXPECT_NEAR(Phi(i, j), col(i), 1e-6) << i << "," << j;
+    }
+    EXPECT_NEAR(Phi(es::kBg, es::kBg), std::exp(-dt / 2.0), 1e-15);
+    // AND the driving noise keeps the stationary variance: exp(-2dt/tau) sigma^2 + q = sigma^2 (+ random walk)
+    const double rw = c.accel_bias_rw_mps3_rthz * c.accel_bias_rw_mps3_rthz * dt;
+    EXPECT_NEAR(Q(es::kBa, es::kBa) - rw, 1e-6 * (1.0 - std::exp(-2.0 * dt / 5.0)), 1e-18);
+  }
 }
 
 TEST(EkfJacobian, So3HelpersAgreeWithDefinitions) {
