@@ -1,6 +1,7 @@
 #include "drivers/replay/recording_reader.h"
 
 #include "drivers/recording/sample_codec.h"
+#include "drivers/recording/truth_codec.h"
 
 namespace deepnav {
 
@@ -61,6 +62,13 @@ bool RecordingReader::handle(const mcap::MessageView& m, const Callback& callbac
       e.kind = ReplayEvent::Kind::kTruth;
       if (!decodeTruth(m.data, m.size, &e.truth)) break;
       e.t_us = e.truth.t_us;
+      return callback(e);
+    case Topic::kFrameTruth:
+      if (!deliver_frame_truth_) return true;
+      e.kind = ReplayEvent::Kind::kFrameTruth;
+      if (!decodeFrameTruth(m.data, m.size, &frame_truth_)) break;
+      e.t_us = frame_truth_.t_us;
+      e.frame_truth = &frame_truth_;
       return callback(e);
     case Topic::kStereoInfo:
       if (frame_has_info_) ++stats_.incomplete_frames;

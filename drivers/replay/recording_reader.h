@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "drivers/mcap/reader.h"
+#include "drivers/recording/frame_truth.h"
 #include "drivers/recording/topics.h"
 #include "nav/types/input_sample.h"
 #include "nav/types/nav_solution.h"
@@ -17,13 +18,14 @@ namespace deepnav {
 
 // One item of a recording as the replay sees it.
 struct ReplayEvent {
-  enum class Kind { kInput, kSolution, kFrame, kTruth };
+  enum class Kind { kInput, kSolution, kFrame, kTruth, kFrameTruth };
   Kind kind = Kind::kInput;
   TimeUs t_us = 0;
   InputSample input;
   NavSolution solution;
   TruthSample truth;
   const StereoFrame* frame = nullptr;  // valid during the callback only
+  const FrameTruth* frame_truth = nullptr;  // kFrameTruth: poses only (no maps), during the callback only
 };
 
 struct ReplayReadStats {
@@ -50,6 +52,10 @@ class RecordingReader {
   // File order = the order the loop consumed and produced; log-time order = sensor time order.
   bool forEach(bool log_time_order, const Callback& callback, std::string* error);
 
+  // Also deliver the simulator's per-pair truth (/truth/frame) as kFrameTruth events (off by default:
+  // the loop never sees it; evaluation, e.g. the replay's VO consistency, asks for it).
+  void setDeliverFrameTruth(bool deliver) { deliver_frame_truth_ = deliver; }
+
   const std::map<std::string, std::string>* metadata(const std::string& name) const;
   bool truncated() const { return reader_.truncated(); }
   const std::vector<std::string>& warnings() const { return reader_.warnings(); }
@@ -66,6 +72,8 @@ class RecordingReader {
   StereoFrame frame_;
   bool frame_has_info_ = false;
   bool frame_has_left_ = false;
+  bool deliver_frame_truth_ = false;
+  FrameTruth frame_truth_;
 };
 
 }  // namespace deepnav

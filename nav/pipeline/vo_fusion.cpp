@@ -12,6 +12,7 @@ void VoFusion::init(const Eigen::Isometry3d& T_robot_cam, int kept_clones) {
   slots_ = {};
   next_id_ = 1;
   counters_ = VoFusionCounters{};
+  last_outcome_.fill(VoOutcome::kNone);
 }
 
 const VoFusion::Slot* VoFusion::find(TimeUs t_us) const {
@@ -24,22 +25,27 @@ const VoFusion::Slot* VoFusion::find(TimeUs t_us) const {
 void VoFusion::fuse(const VoMeasurement& vo, TimeUs t_us, Ekf* ekf) {
   if (!vo.valid) return;
   ++counters_.measurements;
+  VoOutcome& outcome = last_outcome_[static_cast<std::size_t>(vo.source) % last_outcome_.size()];
   const Slot* slot = find(vo.t_reference_us);
   RelativePoseMeasurement m;
   if (!slot) {
     ++counters_.no_clone;
+    outcome = VoOutcome::kNoClone;
     return;
   }
   if (!relativePoseFromCamera(vo, T_robot_cam_, t_us, slot->id, &m)) {
     ++counters_.rejected;
+    outcome = VoOutcome::kUnusable;
     return;
   }
   const FuseResult r = ekf->fuseRelativePose(m);
   if (r.status == FuseStatus::kAccepted || r.status == FuseStatus::kQueued) {
     ++counters_.accepted;
     ++counters_.accepted_by_source[static_cast<std::size_t>(vo.source)];
+    outcome = r.status == FuseStatus::kAccepted ? VoOutcome::kFused : VoOutcome::kQueued;
   } else {
     ++counters_.rejected;
+    outcome = r.status == FuseStatus::kRejected ? VoOutcome::kRejected : VoOutcome::kNotFused;
   }
 }
 
@@ -77,6 +83,7 @@ void VoFusion::releaseAll(TimeUs t_us, Ekf* ekf) {
 }
 
 void VoFusion::onVision(const VisionResult& v, bool active, Ekf* ekf) {
+  last_outcome_.fill(VoOutcome::kNone);
   if (!active) {
     releaseAll(v.t_us, ekf);
     return;

@@ -18,6 +18,17 @@ struct VoFusionCounters {
   std::array<std::uint32_t, 3> accepted_by_source{};  // index VoSource
 };
 
+// What became of the last VO result of one source (evaluation: the replay's VO consistency table).
+enum class VoOutcome : std::uint8_t {
+  kNone = 0,    // none offered in the last vision result (or outside stage 2)
+  kNoClone,     // its reference pair has no clone
+  kUnusable,    // not finite
+  kFused,       // accepted by the EKF gate
+  kQueued,      // ahead of the IMU: fused or gated later (counted as accepted)
+  kRejected,    // refused by the EKF gate
+  kNotFused,    // bad input, dropped late, filter not aligned
+};
+
 // Stage 2 of the paper in the filter: each stereo pair's pose is cloned into the EKF state at its capture
 // time (stochastic cloning), and a VO result of a later pair, relative to the pose at an earlier pair's
 // capture time, is fused against that clone. Clones of the last `kept` pairs are kept (the ORB VO may
@@ -30,6 +41,7 @@ class VoFusion {
   void onVision(const VisionResult& v, bool active, Ekf* ekf);
 
   const VoFusionCounters& counters() const { return counters_; }
+  VoOutcome lastOutcome(VoSource source) const { return last_outcome_[static_cast<std::size_t>(source)]; }
 
  private:
   struct Slot {
@@ -49,6 +61,7 @@ class VoFusion {
   std::array<Slot, kMaxSlots> slots_{};
   std::uint32_t next_id_ = 1;
   VoFusionCounters counters_;
+  std::array<VoOutcome, 3> last_outcome_{};  // index VoSource
 };
 
 }  // namespace deepnav

@@ -84,6 +84,8 @@ bool OrbStereoOdometry::init(const OrbVoConfig& config, const StereoRig& rig, st
     level_sigma_px_[l] = config.pixel_sigma_px * level_scale_[l];
   }
   observations_.reserve(capacity_);
+  saved_map_point_.reserve(capacity_);
+  saved_match_distance_.reserve(capacity_);
   observation_feature_.reserve(capacity_);
   inlier_.assign(capacity_, 0);
   ba_R_.assign(window, Eigen::Matrix3d::Identity());
@@ -124,6 +126,7 @@ void OrbStereoOdometry::reset() {
   has_velocity_ = false;
   anchor_keyframe_id_ = -1;
   anchor_until_keyframe_id_ = -1;
+  last_tracked_.has_prior = false;
   prev_.features.clear();
   prev_.map_point.clear();
 }
@@ -142,6 +145,10 @@ bool OrbStereoOdometry::process(TimeUs t_us, const cv::Mat& left, const cv::Mat&
   *out = OrbVoOutput();
   out->t_us = t_us;
   keyframe_inserted_ = false;
+  prior_cur_ = prior_next_;
+  prior_cur_T_odom_cam_ = prior_next_T_odom_cam_;
+  prior_next_ = false;
+  prior_reselected_ = false;
   if (!ready_ || !detect(t_us, left, right)) {
     fillOutput(out);
     return false;
@@ -152,6 +159,7 @@ bool OrbStereoOdometry::process(TimeUs t_us, const cv::Mat& left, const cv::Mat&
     if (startMap(out)) return true;
   } else if (!lost_) {
     tracked = trackFrame();
+    if (tracked) reselectWithPrior();
   } else {
     relocalised = relocalise();
     tracked = relocalised;
@@ -184,6 +192,7 @@ bool OrbStereoOdometry::process(TimeUs t_us, const cv::Mat& left, const cv::Mat&
   out->cov = rel.cov;
   out->tracked_features = cur_.tracked;
   out->reprojection_rms_px = cur_.pose.rms_px;
+  out->prior_reselected = prior_reselected_;
   if (relocalised) {
     has_velocity_ = false;
   } else {
@@ -193,6 +202,8 @@ bool OrbStereoOdometry::process(TimeUs t_us, const cv::Mat& left, const cv::Mat&
   }
   last_tracked_.t_us = t_us;
   last_tracked_.pose = cur_.pose;
+  last_tracked_.has_prior = prior_cur_;
+  last_tracked_.T_odom_cam_prior = prior_cur_T_odom_cam_;
   lost_ = false;
   lost_frames_ = 0;
   fillOutput(out);
@@ -252,6 +263,8 @@ bool OrbStereoOdometry::startMap(OrbVoOutput* out) {
   cur_.tracked = map_.mapPointCount();
   last_tracked_.t_us = cur_.t_us;
   last_tracked_.pose = cur_.pose;
+  last_tracked_.has_prior = prior_cur_;
+  last_tracked_.T_odom_cam_prior = prior_cur_T_odom_cam_;
   out->status = OrbVoStatus::kInitialised;
   out->tracked_features = cur_.tracked;
   fillOutput(out);
@@ -288,6 +301,51 @@ bool OrbStereoOdometry::trackFrame() {
   if (!estimatePose(PoseStart::kGiven, &pose)) return false;
   cur_.pose = pose;
   return cur_.tracked >= config_.min_tracked;
+}
+
+// When the tracked pose disagrees with the navigation's predicted motion since the last tracked pair,
+// the associations are made again around the prediction and only those within its gate are kept
+// (motion_prior.h: coherently drifting points such as marine snow fall outside it); the re-selected
+// pose replaces the tracked one if it is well supported and agrees with the prediction, else the
+// tracked pose stands (and the filter's gate judges it). Returns true when re-selected.
+bool OrbStereoOdometry::reselectWithPrior() {
+  const OrbMotionPriorConfig& c = config_.motion_prior;
+  if (!c.enabled || !prior_cur_ || !last_tracked_.has_prior) return false;
+  const Eigen::Isometry3d T_a_b = last_tracked_.T_odom_cam_prior.inverse() * prior_cur_T_odom_cam_;
+  if (priorDisagreement(relativeCameraPose(last_tracked_.pose, cur_.pose), T_a_b, c) <= c.consistency_chi2) {
+    return false;
+  }
+  saved_map_point_.assign(cur_.map_point.begin(), cur_.map_point.end());
+  saved_match_distance_.assign(cur_.match_distance.begin(), cur_.match_distance.end());
+  const CameraPoseEstimate saved_pose = cur_.pose;
+  const int saved_tracked = cur_.tracked;
+  const CameraPoseEstimate predicted = predictCameraPose(last_tracked_.pose, T_a_b);
+  clearAssociations();
+  searchPreviousFrame(predicted, config_.frame_search.radius_px);
+  searchLocalMap(predicted);
+  for (std::size_t j = 0; j < cur_.map_point.size(); ++j) {
+    const int m = cur_.map_point[j];
+    if (m < 0) continue;
+    const OrbFeature& f = cur_.features[j];
+    if (!withinPriorGate(rig_, predicted, map_.point(m).p_in_world_m, {f.u_px, f.v_px}, sigmaOfLevel(f.level), c)) {
+      cur_.map_point[j] = -1;
+      cur_.match_distance[j] = std::numeric_limits<int>::max();
+    }
+  }
+  completeStereo(predicted);
+  CameraPoseEstimate pose = predicted;
+  if (estimatePose(PoseStart::kGiven, &pose) && cur_.tracked >= config_.min_tracked &&
+      priorDisagreement(relativeCameraPose(last_tracked_.pose, pose), T_a_b, c) <= c.consistency_chi2) {
+    cur_.pose = pose;
+    prior_reselected_ = true;
+    return true;
+  }
+  cur_.map_point.assign(saved_map_point_.begin(), saved_map_point_.end());
+  cur_.match_distance.assign(saved_match_distance_.begin(), saved_match_distance_.end());
+  for (std::size_t j = 0; j < cur_.map_point.size(); ++j) cur_.available[j] = cur_.map_point[j] < 0;
+  cur_.pose = saved_pose;
+  cur_.tracked = saved_tracked;
+  return false;
 }
 
 // Guided stereo: a tracked corner without a right match gets one from the ZSAD search around the

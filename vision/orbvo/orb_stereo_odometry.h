@@ -1,5 +1,6 @@
 #pragma once
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 #include <cstdint>
 #include <opencv2/core.hpp>
 #include <string>
@@ -53,6 +54,14 @@ class OrbStereoOdometry {
   bool process(TimeUs t_us, const cv::Mat& left, const cv::Mat& right, OrbVoOutput* out);
   bool process(const StereoFrame& frame, OrbVoOutput* out);
 
+  // The navigation's pose of the left camera at the next pair's capture (any fixed frame): with
+  // config.motion_prior.enabled, the motion it predicts since the last tracked pair arbitrates the
+  // inliers when the VO disagrees with it (motion_prior.h). Applies to the next process() only.
+  void setMotionPrior(const Eigen::Isometry3d& T_odom_cam) {
+    prior_next_ = true;
+    prior_next_T_odom_cam_ = T_odom_cam;
+  }
+
   const VoMap& map() const { return map_; }
   const OrbVoConfig& config() const { return config_; }
 
@@ -73,6 +82,8 @@ class OrbStereoOdometry {
   struct TrackedPose {
     TimeUs t_us = 0;
     CameraPoseEstimate pose;
+    bool has_prior = false;  // the navigation's pose of this pair
+    Eigen::Isometry3d T_odom_cam_prior = Eigen::Isometry3d::Identity();
   };
 
   void reserveFrame(FrameState* frame, int capacity) const;
@@ -80,6 +91,7 @@ class OrbStereoOdometry {
   bool startMap(OrbVoOutput* out);
   bool trackFrame();
   bool relocalise();
+  bool reselectWithPrior();
   int searchPreviousFrame(const CameraPoseEstimate& predicted, double radius_px);
   int searchLocalMap(const CameraPoseEstimate& pose);
   int completeStereo(const CameraPoseEstimate& pose);
@@ -148,6 +160,13 @@ class OrbStereoOdometry {
   Eigen::Matrix3d R_velocity_ = Eigen::Matrix3d::Identity();  // T_cur_prev of the last step
   Eigen::Vector3d t_velocity_ = Eigen::Vector3d::Zero();
   TrackedPose last_tracked_;
+  bool prior_next_ = false;  // setMotionPrior() for the next pair
+  Eigen::Isometry3d prior_next_T_odom_cam_ = Eigen::Isometry3d::Identity();
+  bool prior_cur_ = false;   // this pair's
+  Eigen::Isometry3d prior_cur_T_odom_cam_ = Eigen::Isometry3d::Identity();
+  bool prior_reselected_ = false;
+  std::vector<int> saved_map_point_;  // associations before a re-selection (restored if it fails)
+  std::vector<int> saved_match_distance_;
   int anchor_keyframe_id_ = -1;  // keyframe found by the last relocalisation, kept in the local map
   int anchor_until_keyframe_id_ = -1;
 };

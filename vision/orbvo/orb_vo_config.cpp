@@ -31,6 +31,10 @@ const char* OrbVoConfig::validate() const {
   }
   if (reloc_ratio <= 0.0 || reloc_ratio > 1.0) return "reloc_ratio: in (0, 1]";
   if (reset_after_lost_frames < 0) return "reset_after_lost_frames: must be >= 0";
+  if (motion_prior.translation_sigma_m <= 0.0 || motion_prior.rotation_sigma_deg <= 0.0 ||
+      motion_prior.consistency_chi2 <= 0.0 || motion_prior.gate_chi2 <= 0.0) {
+    return "motion_prior: sigmas and chi-square gates must be > 0";
+  }
   return "";
 }
 

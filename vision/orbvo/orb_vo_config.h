@@ -1,5 +1,6 @@
 #pragma once
 
+#include "vision/orbvo/motion_prior.h"
 #include "vision/orbvo/grid_orb_extractor.h"
 #include "vision/orbvo/keyframe_policy.h"
 #include "vision/orbvo/local_bundle_adjuster.h"
@@ -52,6 +53,8 @@ struct OrbVoConfig {
   int reloc_min_inliers = 25;          // tracked points needed to accept a relocalisation
   // Consecutive lost frames after which a new map starts; 0: never
   int reset_after_lost_frames = 0;
+  // The navigation's predicted motion as the arbiter of the inliers (motion_prior.h); off by default.
+  OrbMotionPriorConfig motion_prior;
 
   // Empty when valid, else the name of the first bad field and what it allows.
   const char* validate() const;

@@ -40,6 +40,7 @@ struct OrbVoOutput {
   int stereo_points = 0;             // left features with a stereo match
   double reprojection_rms_px = 0.0;  // RMS of the final pose's inlier residuals
   bool keyframe_inserted = false;
+  bool prior_reselected = false;  // inliers re-selected around the navigation's predicted motion
   int keyframes = 0;   // stored
   int map_points = 0;  // alive
 

@@ -99,9 +99,10 @@ void VisionPipeline::detectMarkers(const StereoFrame& frame, VisionResult* resul
   result->markers_dropped = observations_.count - n + observations_.dropped;
 }
 
-void VisionPipeline::runOrb(const StereoFrame& frame, VisionResult* result) {
+void VisionPipeline::runOrb(const StereoFrame& frame, const VisionContext& context, VisionResult* result) {
   if (!config_.run_orb) return;
   const PartTimer timer(config_.clock_us);
+  if (context.has_pose) orb_.setMotionPrior(context.T_odom_cam);  // used with orb.motion_prior.enabled
   orb_.process(frame, &orb_out_);
   result->orb_us = timer.elapsedUs();
   result->orb_tracked = orb_out_.hasRelativePose() || orb_out_.status == OrbVoStatus::kInitialised
@@ -189,7 +190,7 @@ void VisionPipeline::process(const StereoFrame& input, const VisionContext& cont
   result->mdm_f2 = mdm.f2;
   result->mdm_f3 = mdm.f3;
   detectMarkers(frame, result);
-  runOrb(frame, result);
+  runOrb(frame, context, result);
   result->image_quality = config_.run_orb ? imageQualityScore(mdm, result->orb_tracked, config_.orb_max_tracked)
                                           : mdm.score;
   buildWorkspace(frame, context, result);

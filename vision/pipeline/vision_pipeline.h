@@ -75,7 +75,7 @@ class VisionPipeline {
  private:
   const StereoFrame& rectified(const StereoFrame& frame);
   void detectMarkers(const StereoFrame& frame, VisionResult* result);
-  void runOrb(const StereoFrame& frame, VisionResult* result);
+  void runOrb(const StereoFrame& frame, const VisionContext& context, VisionResult* result);
   void buildWorkspace(const StereoFrame& frame, const VisionContext& context, VisionResult* result);
   void runStage2(const StereoFrame& frame, const VisionContext& context, VisionResult* result);
   void runPlanes(const StereoFrame& frame, const VisionContext& context, VisionResult* result);
