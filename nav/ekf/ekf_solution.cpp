@@ -15,6 +15,7 @@ std::uint32_t Ekf::statusBits(TimeUs now_us) const {
       health_.acceptedWithin(kSrcVoPlanes, now_us, window)) {
     bits |= kStatusPositionValid;
   }
+  if (mag_.state() != MagState::kClean) bits |= kStatusMagDisturbed;
   return bits;
 }
 

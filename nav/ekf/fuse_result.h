@@ -11,6 +11,8 @@ enum class FuseStatus : std::uint8_t {
   kDroppedLate,      // older than the delay window (or than the retained history)
   kBadInput,         // NaN, Inf, negative variance, invalid flag: refused at the door
   kNotAligned,       // the filter has not been aligned or reset yet
+  kRefused,          // refused by a health check of its source (magnetic disturbance, mag_disturbance.h):
+                     // not a gate failure, so it neither counts as rejected nor leads to a gate reset
 };
 
 struct FuseResult {

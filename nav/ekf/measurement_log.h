@@ -5,6 +5,7 @@
 
 #include "nav/ekf/ekf_measurements.h"
 #include "nav/ekf/fuse_result.h"
+#include "nav/ekf/mag_disturbance.h"
 #include "nav/types/attitude_sample.h"
 #include "nav/types/depth_sample.h"
 #include "nav/types/dvl_sample.h"
@@ -36,6 +37,7 @@ struct LoggedMeasurement {
   MeasurementPayload payload;
   FuseStatus outcome = FuseStatus::kQueued;  // current outcome; revised by a replay
   double test_ratio = 0.0;
+  MagAction mag_action = MagAction::kUndecided;  // compass only: the detector's decision, kept for re-fusion
 };
 
 // Measurements inside the delay window, sorted by (t_us, seq): the ones already fused (for re-fusion after

@@ -23,6 +23,7 @@ enum NavStatusBits : std::uint32_t {
   kStatusPositionValid = 1u << 3,   // horizontal position aided (markers or VO) recently
   kStatusPanelFixed = 1u << 4,
   kStatusMapReady = 1u << 5,
+  kStatusMagDisturbed = 1u << 6,    // compass de-weighted or refused: magnetic disturbance (nav/ekf/mag_disturbance.h)
 };
 
 // Per-source flags. Each source has a stale bit (timeout) and a rejected bit (last innovation gated).

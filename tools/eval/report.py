@@ -6,6 +6,7 @@ and writes report/index.html with matplotlib figures in the style of the DexROV 
           marked, and the image-quality curve m_I with the modality threshold under it;
   the error in the odometry frame beside the panel-relative one (T_panel_robot), and the NEES of
           position and heading per tick with the 95 % chi-square band (nees.csv);
+  per source, the innovation test ratio and the normalised innovation of every fusion (fusion.csv);
   one stereo pair with its disparity, the filtered cloud with its planes, the stage-1 octomap;
   the paper's tables (from tools/eval/paper_tables.py)."""
 import argparse
@@ -157,6 +158,72 @@ def nees_plot(path, run, summary, t0):
     return True
 
 
+FUSION_COLOURS = {"fused": "tab:blue", "fused_deweighted": "tab:purple", "gate": "tab:red",
+                  "mag_disturbance": "tab:orange", "unusable": "k"}
+
+
+def read_fusion(run):
+    """fusion.csv of a replay (board/replay/fusion_csv.h): one row per measurement the filter judged."""
+    path = os.path.join(run, "fusion.csv")
+    if not os.path.exists(path):
+        return []
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+def fusion_plot(path, rows, t0):
+    """Per source, in the spirit of PX4's estimator_aid_src_*: the innovation test ratio (<= 1 passes) and
+    each innovation component normalised by the square root of its variance (diag of S) over time, coloured
+    by what the filter did; the compass's magnetic-disturbance state shaded (orange: refused, violet:
+    de-weighted)."""
+    by_source = {}
+    for r in rows:
+        if int(r["dim"]) > 0:
+            by_source.setdefault(r["source"], []).append(r)
+    if not by_source:
+        return False
+    sources = sorted(by_source)
+    fig, axes = plt.subplots(len(sources), 2, figsize=(12, 2.2 * len(sources)), sharex=True, squeeze=False)
+    for row, src in enumerate(sources):
+        items = by_source[src]
+        t = np.array([float(r["t_s"]) for r in items]) - t0
+        reasons = [r["reason"] for r in items]
+        ratio = np.array([float(r["test_ratio"]) for r in items])
+        ax_r, ax_n = axes[row]
+        for reason in sorted(set(reasons)):
+            m = np.array([x == reason for x in reasons])
+            ax_r.semilogy(t[m], np.clip(ratio[m], 1e-4, 1e4), ".", ms=1.5,
+                          color=FUSION_COLOURS.get(reason, "tab:gray"), label=f"{reason} ({m.sum()})")
+        ax_r.axhline(1.0, color="k", ls=":", lw=0.8)
+        ax_r.set_ylabel(f"{src}\ntest ratio")
+        ax_r.legend(fontsize=6, loc="upper left", markerscale=4)
+        dim = max(int(r["dim"]) for r in items)
+        for i in range(dim):
+            nu = np.array([float(r[f"innov_{i}"]) for r in items])
+            var = np.array([float(r[f"var_{i}"]) for r in items])
+            ok = var > 0
+            ax_n.plot(t[ok], nu[ok] / np.sqrt(var[ok]), ".", ms=1.0, label=f"component {i}")
+        for k in (-3, 3):
+            ax_n.axhline(k, color="k", ls=":", lw=0.8)
+        ax_n.set_ylabel("innovation / sqrt(S)")
+        ax_n.set_ylim(-15, 15)
+        if dim > 1:
+            ax_n.legend(fontsize=6, loc="upper left", markerscale=4, ncol=dim)
+        if src == "heading":
+            state = np.array([int(r["mag_state"]) for r in items])
+            for ax in (ax_r, ax_n):
+                shade_intervals(ax, t, state == 2, "tab:orange", "compass refused")
+                shade_intervals(ax, t, state == 1, "tab:purple", "compass de-weighted")
+    axes[0][0].set_title("Innovation test ratio per fused measurement (dotted: the gate)")
+    axes[0][1].set_title("Normalised innovation (dotted: 3 sigma)")
+    axes[-1][0].set_xlabel("dive time (s)")
+    axes[-1][1].set_xlabel("dive time (s)")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return True
+
+
 def accuracy_rows(summary):
     """(name, stats or None) rows: odometry-frame error beside the panel-relative one, aligned ATE."""
     panel = summary.get("panel_error") or {}
@@ -245,6 +312,9 @@ def main():
         if os.path.exists(os.path.join(args.run, "nees.csv")) and nees_plot(
                 os.path.join(args.out, "nees.png"), args.run, summary, t[0]):
             figures.append("nees.png")
+        fusion = read_fusion(args.run)
+        if fusion and fusion_plot(os.path.join(args.out, "fusion.png"), fusion, t[0]):
+            figures.append("fusion.png")
     if args.figures and os.path.isdir(args.figures):
         for name in ("left.png", "disparity.png", "planes.png"):
             src = os.path.join(args.figures, name)
