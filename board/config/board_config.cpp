@@ -370,6 +370,8 @@ const std::array kBoardParams = {
       DEEPNAV_FIELD(ekf.dvl_scale_prior_sigma)},
     P{"ekf.dvl_misalignment_prior_sigma_rad", ParamType::kDouble, "rad", 0, 0.2, "0", "", "prior 1-sigma of each of the 3 estimated DVL misalignment angles (0: not estimated)",
       DEEPNAV_FIELD(ekf.dvl_misalignment_prior_sigma_rad)},
+    P{"ekf.dvl_bias_prior_sigma_mps", ParamType::kDouble, "m/s", 0, 0.5, "0", "", "prior 1-sigma of each of the 3 estimated DVL velocity biases, DVL axes (0: not estimated)",
+      DEEPNAV_FIELD(ekf.dvl_bias_prior_sigma_mps)},
     P{"ekf.heading_bias_prior_sigma_rad", ParamType::kDouble, "rad", 0, 0.5, "0", "", "prior 1-sigma of the estimated compass residual bias (0: not estimated)",
       DEEPNAV_FIELD(ekf.heading_bias_prior_sigma_rad)},
     P{"ekf.heading_deviation_prior_sigma_rad", ParamType::kDouble, "rad", 0, 0.5, "0", "", "prior 1-sigma of each estimated compass deviation term B sin psi, C cos psi, D sin 2psi, E cos 2psi (0: not estimated)",

@@ -59,6 +59,7 @@ std::string estimatorStatesJson(const EstimatorStatesReport& r) {
     << ", \"dvl_scale\": " << scalarEntry(l.dvl_scale >= 0, v.dvl_scale, sd.dvl_scale)
     << ", \"dvl_misalignment_rad\": "
     << vectorEntry(l.dvl_misalignment >= 0, v.dvl_misalignment_rad, sd.dvl_misalignment_rad)
+    << ", \"dvl_bias_mps\": " << vectorEntry(l.dvl_bias >= 0, v.dvl_bias_mps, sd.dvl_bias_mps)
     << ", \"heading_bias_rad\": " << scalarEntry(l.heading_bias >= 0, v.heading_bias_rad, sd.heading_bias_rad)
     << ", \"heading_deviation_bcde_rad\": "
     << vectorEntry(l.heading_deviation >= 0, v.heading_deviation_rad, sd.heading_deviation_rad) << "}";

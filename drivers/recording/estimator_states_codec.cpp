@@ -51,6 +51,9 @@ std::size_t encodeEstimatorStates(const EstimatorStates& e, std::uint8_t* out, s
   w.boolean(e.heading_deviation_estimated);
   writeArray(w, e.heading_deviation_rad);
   writeArray(w, e.heading_deviation_sigma_rad);
+  w.boolean(e.dvl_bias_estimated);
+  writeArray(w, e.dvl_bias_mps);
+  writeArray(w, e.dvl_bias_sigma_mps);
   return w.ok() ? w.size() : 0;
 }
 
@@ -67,7 +70,8 @@ bool decodeEstimatorStates(const std::uint8_t* data, std::size_t size, Estimator
                   readArray(r, &e->dvl_misalignment_sigma_rad) && r.boolean(&e->heading_bias_estimated) &&
                   r.f64(&e->heading_bias_rad) && r.f64(&e->heading_bias_sigma_rad) &&
                   r.boolean(&e->heading_deviation_estimated) && readArray(r, &e->heading_deviation_rad) &&
-                  readArray(r, &e->heading_deviation_sigma_rad);
+                  readArray(r, &e->heading_deviation_sigma_rad) && r.boolean(&e->dvl_bias_estimated) &&
+                  readArray(r, &e->dvl_bias_mps) && readArray(r, &e->dvl_bias_sigma_mps);
   if (!ok) return false;
   e->t_us = static_cast<TimeUs>(sec) * kUsPerS + static_cast<TimeUs>(nanosec / 1000);
   return true;

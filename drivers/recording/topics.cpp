@@ -107,7 +107,8 @@ const ros::MsgDefinitions& projectDefinitions() {
        "bool compass_bias_estimated\nfloat64 compass_bias # rad, added to the heading\nfloat64 compass_bias_sigma\n"
        "bool compass_deviation_estimated\n"
        "float64[4] compass_deviation # rad: B sin psi, C cos psi, D sin 2psi, E cos 2psi (psi magnetic heading)\n"
-       "float64[4] compass_deviation_sigma\n"},
+       "float64[4] compass_deviation_sigma\n"
+       "bool dvl_bias_estimated\nfloat64[3] dvl_bias # m/s, DVL axes: v_measured = ... + b\nfloat64[3] dvl_bias_sigma\n"},
       {"deepnav_msgs/FusionDiagnostic",
        "std_msgs/Header header # stamp = capture time of the measurement\n"
        "uint8 source # 0 imu, 1 dvl, 2 depth, 3 heading, 4 attitude, 5 markers, 6 vo_orb, 7 vo_planes\n"

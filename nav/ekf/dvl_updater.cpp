@@ -28,7 +28,7 @@ namespace {
 // nominal DVL axes and M = (1 + s) Exp(-alpha), the prediction becomes M y and every Jacobian block
 // M times the one without them, plus
 //   H_s = Exp(-alpha) y,  H_alpha = (1 + s) Exp(-alpha) [y]x Jr(-alpha)   (Exp(-alpha - d) ~= Exp(-alpha) (I - [Jr(-alpha) d]x)).
-void addDvlSystematic(const FilterState& s, const Eigen::Vector3d& y, Linearization* out) {
+void addDvlScaleAndMisalignment(const FilterState& s, const Eigen::Vector3d& y, Linearization* out) {
   const SystematicLayout& l = s.sys_layout;
   const double scale = 1.0 + s.x.sys.dvl_scale;
   const Eigen::Vector3d& alpha = s.x.sys.dvl_misalignment_rad;
@@ -40,6 +40,12 @@ void addDvlSystematic(const FilterState& s, const Eigen::Vector3d& y, Linearizat
   if (l.dvl_misalignment >= 0) {
     out->H.block<3, 3>(0, s.sysIndex(l.dvl_misalignment)) = scale * E * skew(y) * rightJacobianSo3(-alpha);
   }
+}
+
+// A velocity bias b in the DVL axes adds to the prediction: H_b = I.
+void addDvlBias(const FilterState& s, Linearization* out) {
+  out->residual.head<3>() -= s.x.sys.dvl_bias_mps;
+  out->H.block<3, 3>(0, s.sysIndex(s.sys_layout.dvl_bias)).setIdentity();
 }
 
 }  // namespace
@@ -56,7 +62,8 @@ bool linearizeDvl(const FilterState& s, const DvlSample& m, const EkfConfig& c, 
   out->H.block<3, 3>(0, es::kV) = R_dvl_robot * Rt;
   out->H.block<3, 3>(0, es::kTheta) = R_dvl_robot * Rt * skew(v);
   out->H.block<3, 3>(0, es::kBg) = R_dvl_robot * skew(r);
-  if (s.sys_layout.dvl_scale >= 0 || s.sys_layout.dvl_misalignment >= 0) addDvlSystematic(s, v_pred, out);
+  if (s.sys_layout.dvl_scale >= 0 || s.sys_layout.dvl_misalignment >= 0) addDvlScaleAndMisalignment(s, v_pred, out);
+  if (s.sys_layout.dvl_bias >= 0) addDvlBias(s, out);
   if (m.cov_v_dvl_mps2.diagonal().minCoeff() > 0.0) {
     out->R = m.cov_v_dvl_mps2;
   } else {

@@ -106,6 +106,9 @@ bool checkSystematic(const EkfConfig& c, std::string* e) {
   if (!nonNegative(c.dvl_scale_prior_sigma) || c.dvl_scale_prior_sigma > 0.2) {
     return fail(e, "dvl_scale_prior_sigma", "must be in [0, 0.2]");
   }
+  if (!nonNegative(c.dvl_bias_prior_sigma_mps) || c.dvl_bias_prior_sigma_mps > 0.5) {
+    return fail(e, "dvl_bias_prior_sigma_mps", "must be in [0, 0.5] m/s");
+  }
   if (!nonNegative(c.dvl_misalignment_prior_sigma_rad) || c.dvl_misalignment_prior_sigma_rad > 0.2) {
     return fail(e, "dvl_misalignment_prior_sigma_rad", "must be in [0, 0.2] rad");
   }

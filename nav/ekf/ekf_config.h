@@ -77,6 +77,7 @@ struct EkfConfig {
   // --- Systematic error states (systematic_states.h): a prior 1-sigma of 0 leaves the state out -------
   double dvl_scale_prior_sigma = 0.0;              // DVL scale factor s (v_meas = (1 + s) v), fraction
   double dvl_misalignment_prior_sigma_rad = 0.0;   // DVL mounting rotation, each of 3 axes, rad
+  double dvl_bias_prior_sigma_mps = 0.0;           // DVL velocity bias, each of 3 DVL axes, m/s
   double heading_bias_prior_sigma_rad = 0.0;       // compass residual bias, rad
   double heading_deviation_prior_sigma_rad = 0.0;  // each of the deviation terms B, C, D, E, rad
   // Compass samples' sigma raised to at least this (their white noise may be far below the datasheet's

@@ -21,7 +21,7 @@ constexpr int kBa = 12;
 constexpr int kCoreDim = 15;
 constexpr int kCloneDim = 6;       // [dp, dtheta] of one cloned pose
 constexpr int kMaxClones = 4;      // compile-time cap; EkfConfig::max_clones chooses up to this
-constexpr int kMaxSysDim = 9;      // DVL scale 1 + DVL misalignment 3 + compass bias 1 + deviation 4
+constexpr int kMaxSysDim = 12;     // DVL scale 1 + misalignment 3 + velocity bias 3 + compass bias 1 + deviation 4
 constexpr int kMaxDim = kCoreDim + kCloneDim * kMaxClones + kMaxSysDim;
 constexpr int kMaxMeasDim = 6;     // largest measurement (6-DoF pose)
 

@@ -12,6 +12,7 @@ void injectSystematic(const ErrorVector& dx, FilterState* s) {
   SystematicErrors& e = s->x.sys;
   if (l.dvl_scale >= 0) e.dvl_scale += dx(s->sysIndex(l.dvl_scale));
   if (l.dvl_misalignment >= 0) e.dvl_misalignment_rad += dx.segment<3>(s->sysIndex(l.dvl_misalignment));
+  if (l.dvl_bias >= 0) e.dvl_bias_mps += dx.segment<3>(s->sysIndex(l.dvl_bias));
   if (l.heading_bias >= 0) e.heading_bias_rad += dx(s->sysIndex(l.heading_bias));
   if (l.heading_deviation >= 0) e.heading_deviation_rad += dx.segment<4>(s->sysIndex(l.heading_deviation));
 }
@@ -56,7 +57,8 @@ void injectErrorState(const ErrorVector& dx, FilterState* s) {
 bool isFiniteState(const FilterState& s) {
   if (!s.x.p_robot_in_odom_m.allFinite() || !s.x.v_robot_in_odom_mps.allFinite() ||
       !s.x.q_odom_robot.coeffs().allFinite() || !s.x.b_gyro_radps.allFinite() || !s.x.b_accel_mps2.allFinite() ||
-      !std::isfinite(s.x.sys.dvl_scale + s.x.sys.dvl_misalignment_rad.sum() + s.x.sys.heading_bias_rad +
+      !std::isfinite(s.x.sys.dvl_scale + s.x.sys.dvl_misalignment_rad.sum() + s.x.sys.dvl_bias_mps.sum() +
+                     s.x.sys.heading_bias_rad +
                      s.x.sys.heading_deviation_rad.sum())) {
     return false;
   }

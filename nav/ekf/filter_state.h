@@ -15,6 +15,9 @@ struct SystematicErrors {
   double dvl_scale = 0.0;  // v_measured = (1 + s) v_true (sound-speed error)
   // Residual DVL mounting rotation as a rotation vector: R_robot_dvl_true = R_robot_dvl Exp(alpha).
   Eigen::Vector3d dvl_misalignment_rad = Eigen::Vector3d::Zero();
+  // Velocity bias of the bottom track in the DVL axes, m/s: v_measured = ... + b (the datasheet's "+-x cm/s"
+  // term of the accuracy, e.g. beam-geometry and transducer errors).
+  Eigen::Vector3d dvl_bias_mps = Eigen::Vector3d::Zero();
   double heading_bias_rad = 0.0;  // compass residual bias (with the deviation's constant term A)
   // Deviation terms [B, C, D, E] of B sin psi + C cos psi + D sin 2psi + E cos 2psi, psi magnetic heading.
   Eigen::Vector4d heading_deviation_rad = Eigen::Vector4d::Zero();
@@ -25,6 +28,7 @@ struct SystematicErrors {
 struct SystematicLayout {
   int dvl_scale = -1;
   int dvl_misalignment = -1;
+  int dvl_bias = -1;
   int heading_bias = -1;
   int heading_deviation = -1;
   int dim = 0;

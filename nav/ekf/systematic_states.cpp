@@ -27,6 +27,7 @@ SystematicLayout systematicLayout(const EkfConfig& c) {
   };
   add(c.dvl_scale_prior_sigma, 1, &l.dvl_scale);
   add(c.dvl_misalignment_prior_sigma_rad, 3, &l.dvl_misalignment);
+  add(c.dvl_bias_prior_sigma_mps, 3, &l.dvl_bias);
   add(c.heading_bias_prior_sigma_rad, 1, &l.heading_bias);
   add(c.heading_deviation_prior_sigma_rad, 4, &l.heading_deviation);
   return l;
@@ -42,6 +43,7 @@ void resetSystematicCovariance(const EkfConfig& c, FilterState* s) {
   const SystematicLayout& l = s->sys_layout;
   setDiagonal(l.dvl_scale, 1, c.dvl_scale_prior_sigma, s);
   setDiagonal(l.dvl_misalignment, 3, c.dvl_misalignment_prior_sigma_rad, s);
+  setDiagonal(l.dvl_bias, 3, c.dvl_bias_prior_sigma_mps, s);
   setDiagonal(l.heading_bias, 1, c.heading_bias_prior_sigma_rad, s);
   setDiagonal(l.heading_deviation, 4, c.heading_deviation_prior_sigma_rad, s);
 }
@@ -68,6 +70,7 @@ SystematicEstimates systematicEstimates(const FilterState& s) {
   const SystematicLayout& l = s.sys_layout;
   e.sigma.dvl_scale = sd(l.dvl_scale, 0);
   for (int k = 0; k < 3; ++k) e.sigma.dvl_misalignment_rad(k) = sd(l.dvl_misalignment, k);
+  for (int k = 0; k < 3; ++k) e.sigma.dvl_bias_mps(k) = sd(l.dvl_bias, k);
   e.sigma.heading_bias_rad = sd(l.heading_bias, 0);
   for (int k = 0; k < 4; ++k) e.sigma.heading_deviation_rad(k) = sd(l.heading_deviation, k);
   return e;
@@ -87,6 +90,7 @@ EstimatorStates estimatorStates(const FilterState& s, TimeUs t_us) {
   out.dvl_scale = e.value.dvl_scale;
   out.dvl_scale_sigma = e.sigma.dvl_scale;
   out.dvl_misalignment_estimated = e.layout.dvl_misalignment >= 0;
+  out.dvl_bias_estimated = e.layout.dvl_bias >= 0;
   out.heading_bias_estimated = e.layout.heading_bias >= 0;
   out.heading_bias_rad = e.value.heading_bias_rad;
   out.heading_bias_sigma_rad = e.sigma.heading_bias_rad;
@@ -94,6 +98,8 @@ EstimatorStates estimatorStates(const FilterState& s, TimeUs t_us) {
   for (int k = 0; k < 3; ++k) {
     out.dvl_misalignment_rad[k] = e.value.dvl_misalignment_rad(k);
     out.dvl_misalignment_sigma_rad[k] = e.sigma.dvl_misalignment_rad(k);
+    out.dvl_bias_mps[k] = e.value.dvl_bias_mps(k);
+    out.dvl_bias_sigma_mps[k] = e.sigma.dvl_bias_mps(k);
   }
   for (int k = 0; k < 4; ++k) {
     out.heading_deviation_rad[k] = e.value.heading_deviation_rad(k);

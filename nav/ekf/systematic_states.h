@@ -11,6 +11,8 @@ struct EkfConfig;
 //   DVL scale factor s (1):        v_meas = (1 + s) Exp(-alpha) R_dvl_robot v_dvl_point   (dvl_updater.h)
 //   DVL misalignment alpha (3):    R_robot_dvl_true = R_robot_dvl Exp(alpha); roll and pitch show
 //                                  through the depth rate while moving, yaw through the track (markers)
+//   DVL velocity bias b (3):       v_meas = (1 + s) Exp(-alpha) R_dvl_robot v_dvl_point + b, DVL axes;
+//                                  shows as a drift while the robot holds station against the markers
 //   compass bias b (1):            heading = psi + b + B sin psi + C cos psi + D sin 2psi + E cos 2psi
 //   compass deviation B..E (4):    (heading_updater.h; the deviation's constant A is part of b)
 // They sit after the clones in the error state (error_state.h) with no process noise.

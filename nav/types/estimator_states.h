@@ -16,6 +16,8 @@ struct EstimatorStates {
   double dvl_scale = 0.0, dvl_scale_sigma = 0.0;  // fraction: v_measured = (1 + s) v_true
   bool dvl_misalignment_estimated = false;
   std::array<double, 3> dvl_misalignment_rad{}, dvl_misalignment_sigma_rad{};  // rotation vector, DVL axes
+  bool dvl_bias_estimated = false;
+  std::array<double, 3> dvl_bias_mps{}, dvl_bias_sigma_mps{};  // DVL axes: v_measured = ... + b
   bool heading_bias_estimated = false;
   double heading_bias_rad = 0.0, heading_bias_sigma_rad = 0.0;
   bool heading_deviation_estimated = false;

@@ -245,6 +245,7 @@ EkfConfig systematicConfig() {
   EkfConfig c = mountedConfig();
   c.dvl_scale_prior_sigma = 0.01;
   c.dvl_misalignment_prior_sigma_rad = 0.02;
+  c.dvl_bias_prior_sigma_mps = 0.005;
   c.heading_bias_prior_sigma_rad = 0.01;
   c.heading_deviation_prior_sigma_rad = 0.02;
   return c;
@@ -257,6 +258,7 @@ FilterState randomSystematicState(std::mt19937_64& rng, const EkfConfig& c) {
   s.x = randomNominal(rng);
   s.x.sys.dvl_scale = 0.02 * n(rng);
   s.x.sys.dvl_misalignment_rad = 0.1 * Eigen::Vector3d(n(rng), n(rng), n(rng));
+  s.x.sys.dvl_bias_mps = 0.01 * Eigen::Vector3d(n(rng), n(rng), n(rng));
   s.x.sys.heading_bias_rad = 0.05 * n(rng);
   s.x.sys.heading_deviation_rad = 0.05 * Eigen::Vector4d(n(rng), n(rng), n(rng), n(rng));
   s.w_robot_meas_radps = Eigen::Vector3d(0.2, -0.3, 0.5);
@@ -267,8 +269,9 @@ FilterState randomSystematicState(std::mt19937_64& rng, const EkfConfig& c) {
   return s;
 }
 
-TEST(EkfJacobian, DvlWithScaleAndMisalignmentMatchesNumericDifferentiation) {
-  // GIVEN a turned DVL with a lever arm, a scale error and a misalignment of up to ~0.2 rad in the state
+TEST(EkfJacobian, DvlWithScaleMisalignmentAndBiasMatchesNumericDifferentiation) {
+  // GIVEN a turned DVL with a lever arm, a scale error, a misalignment of up to ~0.2 rad and a velocity
+  // bias of ~1 cm/s in the state
   std::mt19937_64 rng(21);
   const EkfConfig c = systematicConfig();
   DvlSample m;
@@ -276,8 +279,8 @@ TEST(EkfJacobian, DvlWithScaleAndMisalignmentMatchesNumericDifferentiation) {
   m.v_dvl_mps = Eigen::Vector3d(0.3, 0.1, -0.05);
   for (int trial = 0; trial < 3; ++trial) {
     const FilterState s = randomSystematicState(rng, c);
-    ASSERT_EQ(s.dim(), es::kCoreDim + 2 * es::kCloneDim + 9);
-    // WHEN / THEN the analytic H (scale and misalignment columns included) matches the numeric one
+    ASSERT_EQ(s.dim(), es::kCoreDim + 2 * es::kCloneDim + 12);
+    // WHEN / THEN the analytic H (scale, misalignment and bias columns included) matches the numeric one
     expectJacobianMatches(s, [&](const FilterState& st, Linearization* l) { return linearizeDvl(st, m, c, l); },
                           1e-6);
   }

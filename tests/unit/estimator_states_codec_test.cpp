@@ -30,6 +30,9 @@ EstimatorStates sample() {
   e.heading_bias_sigma_rad = 0.002;
   e.heading_deviation_estimated = false;
   for (int k = 0; k < 4; ++k) e.heading_deviation_rad[k] = 0.001 * k;
+  e.dvl_bias_estimated = true;
+  for (int k = 0; k < 3; ++k) e.dvl_bias_mps[k] = -0.001 * (k + 1);
+  for (int k = 0; k < 3; ++k) e.dvl_bias_sigma_mps[k] = 0.0005 * (k + 1);
   return e;
 }
 
@@ -59,6 +62,9 @@ TEST(EstimatorStatesCodec, RoundTripsEveryFieldAndRefusesTruncation) {
   EXPECT_EQ(out.heading_bias_sigma_rad, in.heading_bias_sigma_rad);
   EXPECT_EQ(out.heading_deviation_estimated, in.heading_deviation_estimated);
   EXPECT_EQ(out.heading_deviation_rad, in.heading_deviation_rad);
+  EXPECT_EQ(out.dvl_bias_estimated, in.dvl_bias_estimated);
+  EXPECT_EQ(out.dvl_bias_mps, in.dvl_bias_mps);
+  EXPECT_EQ(out.dvl_bias_sigma_mps, in.dvl_bias_sigma_mps);
   // AND every truncation is refused, and a buffer too small gives 0
   for (std::size_t cut = 0; cut < n; ++cut) EXPECT_FALSE(decodeEstimatorStates(buf.data(), cut, &out)) << cut;
   EXPECT_EQ(encodeEstimatorStates(in, buf.data(), n - 1), 0u);
@@ -68,6 +74,7 @@ TEST(EstimatorStatesCodec, TopicIsRegisteredWithItsSchema) {
   EXPECT_EQ(topicByName("/nav/estimator_states"), Topic::kEstimatorStates);
   const std::string_view schema = topicSchema(Topic::kEstimatorStates);
   EXPECT_NE(schema.find("float64[4] compass_deviation"), std::string_view::npos);
+  EXPECT_NE(schema.find("float64[3] dvl_bias"), std::string_view::npos);
   EXPECT_NE(schema.find("bool dvl_scale_estimated"), std::string_view::npos);
 }
 
