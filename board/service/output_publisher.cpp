@@ -59,6 +59,9 @@ void OutputPublisher::run() {
   NavOutput out;
   std::uint8_t datagram[kNavDatagramSize];
   while (true) {
+    // stop() may have run before this thread first read the sequence (a start-up that fails right after
+    // start()): its increment is then already in `seen` and the wait would never return.
+    if (stop_.load(std::memory_order_acquire)) return;
     tick_seq_.wait(seen, std::memory_order_acquire);
     seen = tick_seq_.load(std::memory_order_acquire);
     if (stop_.load(std::memory_order_acquire)) return;
