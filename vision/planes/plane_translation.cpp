@@ -3,20 +3,39 @@
 #include <Eigen/Eigenvalues>
 
 namespace deepnav {
+namespace {
+
+// Each plane i moved along its normal n_i by delta_d_i (variance var_i): n_i^T t = delta_d_i. N is the
+// unweighted sum of n n^T (its eigenvalues say which directions the normals span), A and b the weighted
+// normal equations A t = b.
+struct NormalEquations {
+  Eigen::Matrix3d N = Eigen::Matrix3d::Zero();
+  Eigen::Matrix3d A = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d b = Eigen::Vector3d::Zero();
+};
+
+bool accumulate(const Eigen::Vector3d* n_a, const double* delta_d_m, const double* var_m2, int count,
+                NormalEquations* e) {
+  for (int i = 0; i < count; ++i) {
+    if (!(var_m2[i] > 0.0)) return false;
+    e->N += n_a[i] * n_a[i].transpose();
+    e->A += n_a[i] * n_a[i].transpose() / var_m2[i];
+    e->b += n_a[i] * delta_d_m[i] / var_m2[i];
+  }
+  return true;
+}
+
+}  // namespace
 
 bool solvePlaneTranslation(const Eigen::Vector3d* n_a, const double* delta_d_m,
                            const double* var_m2, int count, double min_eigenvalue,
                            TranslationResult* result) {
   if (result == nullptr || count < 1) return false;
-  Eigen::Matrix3d N = Eigen::Matrix3d::Zero();
-  Eigen::Matrix3d A = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d b = Eigen::Vector3d::Zero();
-  for (int i = 0; i < count; ++i) {
-    if (!(var_m2[i] > 0.0)) return false;
-    N += n_a[i] * n_a[i].transpose();
-    A += n_a[i] * n_a[i].transpose() / var_m2[i];
-    b += n_a[i] * delta_d_m[i] / var_m2[i];
-  }
+  NormalEquations e;
+  if (!accumulate(n_a, delta_d_m, var_m2, count, &e)) return false;
+  const Eigen::Matrix3d& N = e.N;
+  const Eigen::Matrix3d& A = e.A;
+  const Eigen::Vector3d& b = e.b;
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
   eig.computeDirect(N / count, Eigen::EigenvaluesOnly);
   result->min_eigenvalue = eig.eigenvalues()(0);
@@ -32,15 +51,11 @@ bool solvePlaneTranslationSubspace(const Eigen::Vector3d* n_a, const double* del
                                    const double* var_m2, int count, double min_eigenvalue,
                                    TranslationSubspaceResult* result) {
   if (result == nullptr || count < 1) return false;
-  Eigen::Matrix3d N = Eigen::Matrix3d::Zero();
-  Eigen::Matrix3d A = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d b = Eigen::Vector3d::Zero();
-  for (int i = 0; i < count; ++i) {
-    if (!(var_m2[i] > 0.0)) return false;
-    N += n_a[i] * n_a[i].transpose();
-    A += n_a[i] * n_a[i].transpose() / var_m2[i];
-    b += n_a[i] * delta_d_m[i] / var_m2[i];
-  }
+  NormalEquations e;
+  if (!accumulate(n_a, delta_d_m, var_m2, count, &e)) return false;
+  const Eigen::Matrix3d& N = e.N;
+  const Eigen::Matrix3d& A = e.A;
+  const Eigen::Vector3d& b = e.b;
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
   eig.computeDirect(N / count);
   // Eigenvalues ascend: the constrained directions are the last `dims`.
