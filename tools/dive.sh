@@ -8,7 +8,8 @@
 #                            a wider matrix (about 9 minutes of the 2 cores per 5-minute dive with all runs)
 # Outputs: out/tables.md (and out/tables-*.json), out/<dive>/<run>/summary.json, report/index.html. The
 # recordings (about 1.3 GB each) are deleted once replayed, but for out/sea-trial-s<first seed>.mcap
-# (the figures' dive); DIVE_KEEP=1 keeps them all.
+# (the figures' dive); DIVE_KEEP=1 keeps them all, and DIVE_REUSE=1 replays those in out/ without simulating
+# them again.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 # Seeds 1 and 2 are the development seeds (what the estimator was tuned and debugged on); the tables
@@ -39,7 +40,12 @@ seeds_of() { if [[ "$1" == moderate ]]; then echo "${seeds[*]}"; else echo "${ot
 echo "== build"
 cmake -S . -B build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_TOOLCHAIN_FILE=toolchains/native.cmake >/dev/null
 cmake --build build -j"$jobs" --target deepnav deepnav-sim deepnav-figures
-rm -rf out report
+if [[ "${DIVE_REUSE:-0}" == 1 && -d out ]]; then
+  find out -mindepth 1 -maxdepth 1 ! -name '*.mcap' -exec rm -rf {} +
+  rm -rf report
+else
+  rm -rf out report
+fi
 mkdir -p out report
 log_dir=out
 start_s=$SECONDS
@@ -78,8 +84,12 @@ done
 echo "== simulate ${#dives[@]} dives (moderate seeds ${seeds[*]}; other waters ${other_seeds[*]}) and replay each as"
 echo "   dead reckoning and the paper's runs, $jobs jobs at a time (a dive's replays start once it is simulated)"
 specs=()
+declare -A sim_of=()
 for d in "${dives[@]}"; do
   variant="${d%%:*}" seed="${d#*:}" tag="$(prefix_of "${d%%:*}")-s${d#*:}"
+  # DIVE_REUSE=1: a recording already in out/ (e.g. kept by DIVE_KEEP=1) is replayed, not simulated again.
+  if [[ "${DIVE_REUSE:-0}" == 1 && -s "out/$tag.mcap" ]]; then sim_of[$tag]=""; continue; fi
+  sim_of[$tag]="sim-$tag"
   specs+=("sim-$tag||build/bin/deepnav-sim --scenario tools/sim/scenarios/$(prefix_of "$variant").yaml \
 --board board/sim-sea/board.yaml --seed $seed --no-truth-maps --out out/$tag.mcap")
 done
@@ -88,7 +98,9 @@ for d in "${dives[@]}"; do
   for run in $(runs_for "$variant"); do
     extra=""
     [[ "$run" == tl2 ]] && extra="--workspace-out out/$tag/tl2/workspace"
-    specs+=("$tag-$run|sim-$tag|build/bin/deepnav replay out/$tag.mcap --out out/$tag/$run ${run_args[$run]} $extra")
+    # The board as it is now (the recording stores the one it was simulated with).
+    specs+=("$tag-$run|${sim_of[$tag]}|build/bin/deepnav replay out/$tag.mcap --board board/sim-sea/board.yaml \
+--out out/$tag/$run ${run_args[$run]} $extra")
   done
 done
 run_pool "${specs[@]}"
