@@ -38,7 +38,8 @@ struct SoakResult {
   double wall_s = 0.0;
   double baseline_rss_kib = 0.0;     // highest RSS during the warm-up dives
   double after_rss_kib = 0.0;        // highest RSS after them
-  double growth_kib = 0.0;           // lowest dive peak RSS of the second half after warm-up - of the first half
+  double growth_kib = 0.0;           // rise of the dive peak RSS from the first to the second half after
+                                     // warm-up: the lesser of the lowest peaks' and the highest peaks' rise
   double end_rss_slope_kib_per_h = 0.0;  // least-squares trend of end RSS over the post-warm-up dives
   bool growth_ok = false;
   std::string error;
