@@ -167,7 +167,8 @@ void LiveLoop::visionThread() {
     VisionResult result;
     const TimeUs start = monotonicUs();
     const VisionContext context = vision_context_.contextAt(frame.t_us);
-    vision_.process(frame, context, &result);
+    vision_.process(frame, context, &result);  // never throws: a failing stage fails the pair
+    vision_failures_.store(vision_.failedPairs(), std::memory_order_relaxed);
     const TimeUs elapsed = monotonicUs() - start;
     result.processing_us = static_cast<std::uint32_t>(elapsed);
     scheduler_.recordRun(vision_task_, elapsed);

@@ -81,6 +81,9 @@ class LiveLoop {
   std::uint64_t recorderWriteFailures() const { return recording_ ? recorder_.writeFailures() : 0; }
   // Samples and frames refused by full input rings or an exhausted frame pool (a driver outran the loop).
   std::uint64_t inputsRefused() const;
+  // Stereo pairs the vision worker gave up because a stage threw (VisionPipeline::failedPairs()); each
+  // was handed to the loop as frame_ok = false. Readable from any thread.
+  std::uint64_t visionFailures() const { return vision_failures_.load(std::memory_order_relaxed); }
 
  private:
   void loopThread();
@@ -100,6 +103,7 @@ class LiveLoop {
   int nav_task_ = -1, stats_task_ = -1, vision_task_ = -1;
   LoopClock clock_;
   std::atomic<bool> running_{false};
+  std::atomic<std::uint64_t> vision_failures_{0};
   std::thread loop_thread_, vision_thread_;
   mutable std::mutex latest_mutex_;  // guards latest_ and counters_ copies for readers off the loop
   NavSolution latest_;

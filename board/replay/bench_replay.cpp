@@ -297,6 +297,16 @@ bool onReproduceEvent(BenchRun* run, const ReplayEvent& e) {
   return true;
 }
 
+// Pairs a vision stage threw on: counted, and the last exception named among the warnings.
+void noteVisionFailures(const VisionPipeline& vision, ReplaySummary* summary) {
+  summary->vision_failures = vision.failedPairs();
+  if (summary->vision_failures == 0) return;
+  const VisionStageFailure& f = vision.lastFailure();
+  summary->warnings.push_back(std::to_string(summary->vision_failures) +
+                              " stereo pairs skipped: a vision stage threw (last: pair " + std::to_string(f.sequence) +
+                              ", " + visionStageName(f.stage) + ": " + f.what + ")");
+}
+
 ModalityCount modalityCount(std::uint64_t offered, const SourceCounters& c) {
   ModalityCount m;
   m.offered = offered;
@@ -388,6 +398,7 @@ bool runBenchReplay(const ReplayOptions& o, ReplaySummary* summary, std::string*
   summary->vo = run->core.vo().counters();
   summary->modalities = modalityCounts(run->core, summary->vo_offers);
   summary->estimator_states = estimatorStatesReport(run->core.ekf());
+  noteVisionFailures(run->vision, summary);
   summary->map_frames = run->vision.workspace().frames();
   summary->map_voxels = run->vision.workspace().voxels();
   if (!o.workspace_out.empty() && !summary->reproduce) {

@@ -56,6 +56,7 @@ struct ReplaySummary {
   std::uint64_t ticks = 0;
   std::uint64_t frames = 0;
   std::uint64_t frames_not_processed = 0;  // dead-reckoning run: pairs read but given to no vision
+  std::uint64_t vision_failures = 0;       // pairs failed by a throwing vision stage (skipped, not fused)
   std::uint64_t solutions_compared = 0;
   std::uint64_t mismatches = 0;  // recorded vs replayed NavSolution, bit for bit
   double dive_s = 0.0;           // recording time span

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <thread>
 
+#include "board/config/board_overrides.h"
 #include "board/loop/live_loop.h"
 #include "drivers/clock/monotonic_clock.h"
 #include "drivers/replay/replay_source.h"
@@ -21,7 +22,10 @@ bool runRealtimeReplay(const ReplayOptions& o, ReplaySummary* summary, std::stri
   RecordingReader reader;
   if (!reader.open(o.input_path, error)) return false;
   VehicleSetup setup;
-  if (!loadReplaySetup(o.board_path, reader, o.input_path, &setup, error)) return false;
+  if (!loadReplaySetup(o.board_path, reader, o.input_path, &setup, error) ||
+      !applyBoardOverrides(o.overrides, &setup, error)) {
+    return false;
+  }
   std::error_code ec;
   std::filesystem::create_directories(o.out_dir, ec);
   const std::string live_path = o.out_dir + "/live.mcap";
@@ -46,6 +50,7 @@ bool runRealtimeReplay(const ReplayOptions& o, ReplaySummary* summary, std::stri
   if (!loop->stop(error)) return false;
   const LoopStats live_stats = loop->stats();
   const std::uint64_t drops = loop->recorderDrops() + source.refused();
+  const std::uint64_t vision_failures = loop->visionFailures();
   ReplayOptions bench = o;
   bench.input_path = live_path;
   bench.board_path.clear();
@@ -53,6 +58,10 @@ bool runRealtimeReplay(const ReplayOptions& o, ReplaySummary* summary, std::stri
   bench.realtime = false;
   if (!runBenchReplay(bench, summary, error)) return false;
   summary->loop = live_stats;
+  summary->vision_failures = vision_failures;  // the bench pass re-runs no vision: the live count
+  if (vision_failures > 0) {
+    summary->warnings.push_back(std::to_string(vision_failures) + " stereo pairs skipped: a vision stage threw");
+  }
   if (!source.error().empty()) summary->warnings.push_back(source.error());
   if (drops > 0) summary->warnings.push_back(std::to_string(drops) + " samples or records refused by full queues");
   // Ground truth is not a loop input, so the live recording has none: take it from the original.

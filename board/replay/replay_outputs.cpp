@@ -235,6 +235,7 @@ bool writeReplayOutputs(const std::string& dir, const ReplaySummary& s, std::str
   }
   out << "{\n  \"mode\": \"" << (s.reproduce ? "reproduce" : "rerun") << "\",\n";
   out << "  \"ticks\": " << s.ticks << ",\n  \"frames\": " << s.frames << ",\n";
+  out << "  \"vision_failures\": " << s.vision_failures << ",\n";
   out << "  \"solutions_compared\": " << s.solutions_compared << ",\n  \"mismatches\": " << s.mismatches << ",\n";
   out << "  \"dive_s\": " << s.dive_s << ",\n  \"wall_s\": " << s.wall_s << ",\n";
   out << "  \"inputs\": " << inputsJson(s.inputs) << ",\n";
@@ -278,6 +279,11 @@ std::string formatReplaySummary(const ReplaySummary& s) {
   if (s.frames_not_processed > 0) {
     std::snprintf(line, sizeof line, "dead reckoning (no markers, no VO): %llu stereo pairs not processed\n",
                   static_cast<unsigned long long>(s.frames_not_processed));
+    o << line;
+  }
+  if (s.vision_failures > 0) {
+    std::snprintf(line, sizeof line, "vision: %llu stereo pairs failed (a stage threw) and were skipped\n",
+                  static_cast<unsigned long long>(s.vision_failures));
     o << line;
   }
   if (s.reproduce) {

@@ -158,6 +158,7 @@ void DeepnavService::evaluateHealth(bool* healthy) {
   sample.recorder_drops = loop_->recorderDrops();
   sample.recorder_failures = loop_->recorderWriteFailures();
   sample.inputs_refused = loop_->inputsRefused();
+  sample.vision_failures = loop_->visionFailures();
   sample.faults = last.solution.faults;
   sample.solution_finite = isFinite(last.solution);
   publisher_.setHealth(health_.update(sample));

@@ -41,6 +41,7 @@ std::uint32_t HealthMonitor::update(const HealthSample& now) {
     if (now.recorder_drops > last_.recorder_drops) bits |= kHealthRecorderDrops;
     if (now.recorder_failures > last_.recorder_failures) bits |= kHealthRecordingFailed;
     if (now.inputs_refused > last_.inputs_refused) bits |= kHealthInputsRefused;
+    if (now.vision_failures > last_.vision_failures) bits |= kHealthVisionFailed;
   }
   last_ = now;
   has_last_ = true;

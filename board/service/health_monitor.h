@@ -12,6 +12,7 @@ struct HealthSample {
   std::uint64_t recorder_drops = 0;
   std::uint64_t recorder_failures = 0;
   std::uint64_t inputs_refused = 0;
+  std::uint64_t vision_failures = 0;  // stereo pairs failed by a throwing vision stage (cumulative)
   std::uint32_t faults = 0;  // of the latest solution
   bool solution_finite = true;
 };

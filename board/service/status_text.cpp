@@ -30,7 +30,8 @@ std::string healthWords(std::uint32_t h) {
                 {kHealthNavOverrun, "nav-overrun"},        {kHealthVisionOverrun, "vision-overrun"},
                 {kHealthRecorderDrops, "recorder-drops"},  {kHealthRecordingFailed, "recording-failed"},
                 {kHealthInputsRefused, "inputs-refused"},  {kHealthSensorStale, "sensor-stale"},
-                {kHealthSensorRejected, "sensor-rejected"}, {kHealthNotFinite, "not-finite"}};
+                {kHealthSensorRejected, "sensor-rejected"}, {kHealthNotFinite, "not-finite"},
+                {kHealthVisionFailed, "vision-failed"}};
   std::string s;
   for (const auto& w : kWords) {
     if ((h & w.bit) == 0) continue;

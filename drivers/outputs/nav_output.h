@@ -18,6 +18,7 @@ enum NavHealthBits : std::uint32_t {
   kHealthSensorStale = 1u << 7,     // some source timed out (see the fault bits)
   kHealthSensorRejected = 1u << 8,  // some source's last measurement was gated out
   kHealthNotFinite = 1u << 9,       // the solution holds a non-finite number (never expected)
+  kHealthVisionFailed = 1u << 10,   // a vision stage threw on some stereo pairs (skipped, nothing fused)
 };
 
 // Counters carried by every output (cumulative since start).

@@ -1,6 +1,8 @@
 #include "vision/pipeline/vision_pipeline.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <exception>
 #include <string>
 
 #include "vision/iqa/image_quality_score.h"
@@ -44,6 +46,9 @@ bool VisionPipeline::init(const VisionPipelineConfig& config, std::string* error
   config_.dense.channels = config.channels;
   frames_seen_ = 0;
   outside_map_pairs_ = 0;
+  failed_pairs_ = 0;
+  stage_failures_.fill(0);
+  last_failure_ = VisionStageFailure{};
   if (config.rectify) {
     if (config.rectification.image_size != cv::Size(config.width_px, config.height_px)) {
       if (error) *error = "vision: the rectification maps do not have the camera's image size";
@@ -174,26 +179,80 @@ void VisionPipeline::runStage2(const StereoFrame& frame, const VisionContext& co
   }
 }
 
+const char* visionStageName(VisionStage stage) {
+  switch (stage) {
+    case VisionStage::kRectify: return "rectification";
+    case VisionStage::kQuality: return "image quality";
+    case VisionStage::kMarkers: return "markers";
+    case VisionStage::kOrb: return "orb";
+    case VisionStage::kWorkspace: return "workspace map";
+    case VisionStage::kStage2: return "stage-2 vo";
+    case VisionStage::kCount: break;
+  }
+  return "?";
+}
+
+// The one exception boundary of the worker: a try block costs nothing until something throws, and the
+// stage that threw is the one stage_ names.
 void VisionPipeline::process(const StereoFrame& input, const VisionContext& context, VisionResult* result) {
   *result = VisionResult{};
   result->t_us = input.t_us;
   result->sequence = input.sequence;
+  stage_ = VisionStage::kRectify;
+  try {
+    processStages(input, context, result);
+  } catch (const std::exception& e) {
+    failPair(stage_, e.what(), result);
+  } catch (...) {
+    failPair(stage_, "unknown exception", result);
+  }
+}
+
+void VisionPipeline::failPair(VisionStage stage, const char* what, VisionResult* result) {
+  ++failed_pairs_;
+  ++stage_failures_[static_cast<std::size_t>(stage)];
+  last_failure_.stage = stage;
+  last_failure_.sequence = result->sequence;
+  std::snprintf(last_failure_.what, sizeof last_failure_.what, "%s", what ? what : "");
+  const TimeUs t_us = result->t_us;
+  const std::uint64_t sequence = result->sequence;
+  *result = VisionResult{};  // nothing of a half-processed pair is fused
+  result->t_us = t_us;
+  result->sequence = sequence;
+  // The state a stage left half updated is not trusted: the chains restart at the next pair.
+  if (config_.run_orb) orb_.reset();
+  plane_vo_.reset();
+  selector_.reset();
+  ++frames_seen_;
+}
+
+void VisionPipeline::processStages(const StereoFrame& input, const VisionContext& context, VisionResult* result) {
+  const auto enter = [this](VisionStage stage) {
+    stage_ = stage;
+    if (config_.stage_probe_for_test) config_.stage_probe_for_test(stage);
+  };
   const bool size_ok = input.left.cols == config_.width_px && input.left.rows == config_.height_px &&
                        input.right.size() == input.left.size() && input.right.type() == input.left.type();
   if (!size_ok) return;
+  enter(VisionStage::kRectify);
   const StereoFrame& frame = rectified(input);
   if (config_.rectify && !frame.rectified) return;  // the remap refused the pair (image type)
+  enter(VisionStage::kQuality);
   MdmScore mdm;
   if (!computeMdm(frame.left, &mdm, &mdm_ws_)) return;
   result->frame_ok = true;
   result->mdm_f1 = mdm.f1;
   result->mdm_f2 = mdm.f2;
   result->mdm_f3 = mdm.f3;
+  enter(VisionStage::kMarkers);
   detectMarkers(frame, result);
+  enter(VisionStage::kOrb);
   runOrb(frame, context, result);
   result->image_quality = config_.run_orb ? imageQualityScore(mdm, result->orb_tracked, config_.orb_max_tracked)
                                           : mdm.score;
+  enter(VisionStage::kWorkspace);
   buildWorkspace(frame, context, result);
+  enter(VisionStage::kStage2);
   runStage2(frame, context, result);
   result->map_frames = workspace_.frames();
   result->map_voxels = workspace_.voxels();

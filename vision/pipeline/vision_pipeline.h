@@ -1,4 +1,6 @@
 #pragma once
+#include <array>
+#include <cstdint>
 #include <iosfwd>
 #include <string>
 
@@ -20,6 +22,18 @@ namespace deepnav {
 
 // Monotonic clock (us) for the per-part timing statistics; board/ supplies it.
 using VisionClockUs = TimeUs (*)();
+
+// The parts of the per-pair processing whose library calls (OpenCV above all) may throw.
+enum class VisionStage : int { kRectify, kQuality, kMarkers, kOrb, kWorkspace, kStage2, kCount };
+const char* visionStageName(VisionStage stage);
+
+// Why the last failed pair failed: its stage and the exception's message (truncated), kept in place so
+// that recording it allocates nothing.
+struct VisionStageFailure {
+  VisionStage stage = VisionStage::kCount;
+  std::uint64_t sequence = 0;  // of the pair
+  char what[160] = {};
+};
 
 struct VisionPipelineConfig {
   int width_px = 688;
@@ -46,6 +60,9 @@ struct VisionPipelineConfig {
   PlaneOdometryConfig planes;
   WorkspaceBuildConfig workspace;
   VisionClockUs clock_us = nullptr;  // per-part timing in VisionResult; nullptr: zeros
+  // Tests only: called at the start of every stage of every pair (inside its guard), to make a stage
+  // throw as a library would. nullptr on the vehicle.
+  void (*stage_probe_for_test)(VisionStage stage) = nullptr;
 };
 
 // Per-stereo-pair processing of the vision worker, the paper's method on one pair:
@@ -60,7 +77,10 @@ class VisionPipeline {
   bool init(const VisionPipelineConfig& config, std::string* error);
 
   // Fills *result for one pair. Never throws; a bad frame gives frame_ok = false. A raw frame is first
-  // rectified into the pipeline's own preallocated pair (config.rectify).
+  // rectified into the pipeline's own preallocated pair (config.rectify). A stage that throws (a library
+  // precondition, e.g. OpenCV's StereoSGBM with a disparity range as wide as the image) fails the pair:
+  // it is counted (failedPairs(), lastFailure()), its result is frame_ok = false (nothing of it is fused)
+  // and the chains that span pairs (ORB map, plane VO, modality) restart at the next pair.
   void process(const StereoFrame& frame, const VisionContext& context, VisionResult* result);
 
   WorkspaceModel& workspace() { return workspace_; }
@@ -71,6 +91,10 @@ class VisionPipeline {
   const PlaneOdometry& planeOdometry() const { return plane_vo_; }
   // Stage-2 pairs whose view lay outside the mapped workspace (filter skipped).
   std::uint64_t outsideMapPairs() const { return outside_map_pairs_; }
+  // Pairs failed by an exception in one of their stages, in total and per stage, and the last failure.
+  std::uint64_t failedPairs() const { return failed_pairs_; }
+  std::uint64_t stageFailures(VisionStage stage) const { return stage_failures_[static_cast<std::size_t>(stage)]; }
+  const VisionStageFailure& lastFailure() const { return last_failure_; }
 
  private:
   const StereoFrame& rectified(const StereoFrame& frame);
@@ -80,6 +104,8 @@ class VisionPipeline {
   void runStage2(const StereoFrame& frame, const VisionContext& context, VisionResult* result);
   void runPlanes(const StereoFrame& frame, const VisionContext& context, VisionResult* result);
   bool filterByMap(const VisionContext& context);
+  void processStages(const StereoFrame& input, const VisionContext& context, VisionResult* result);
+  void failPair(VisionStage stage, const char* what, VisionResult* result);
 
   VisionPipelineConfig config_{};
   StereoRectifier rectifier_;
@@ -99,6 +125,10 @@ class VisionPipeline {
   WorkspaceModel workspace_;
   std::uint64_t frames_seen_ = 0;
   std::uint64_t outside_map_pairs_ = 0;
+  std::uint64_t failed_pairs_ = 0;
+  std::array<std::uint64_t, static_cast<std::size_t>(VisionStage::kCount)> stage_failures_{};
+  VisionStageFailure last_failure_;
+  VisionStage stage_ = VisionStage::kRectify;  // the stage running (which one threw)
 };
 
 }  // namespace deepnav
