@@ -96,6 +96,9 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"elas", "sgbm", "sgbm-wls"}));
   st->add_option("--max-disp", stereo.max_disparity_px, "disparity search range (px)")->check(CLI::Range(1, 256));
   st->add_option("--out", stereo.out_path, "output .pfm (invalid pixels written as +inf)")->required();
+  st->add_option("--max-pixels", stereo.max_pixels,
+                 "largest image accepted, in pixels (refused before matching; 10 MP takes a 4K pair)")
+      ->check(CLI::Range(1LL, 1LL << 40));
 
   std::string iqa_path;
   auto* iq = app.add_subcommand("iqa", "MDM image quality of one image, as JSON");
@@ -136,21 +139,30 @@ int main(int argc, char** argv) {
   dc->add_option("file", decode_path, "capture file")->required()->check(CLI::ExistingFile);
 
   CLI11_PARSE(app, argc, argv);
-  if (*rp) {
-    replay.realtime = realtime;
-    return runReplay(replay);
-  }
-  if (*rn) return deepnav::runServiceCommand(run, validate_only);
-  if (*dc) return deepnav::runDecodeCommand(decode_format, decode_path);
-  if (*iq) return runIqa(iqa_path);
-  if (*st) return deepnav::runStereoCommand(stereo);
-  if (*cb) return deepnav::runCalibrateCommand(calibrate);
-  if (*cf) {
-    if (!list && board_path.empty()) {
-      std::fprintf(stderr, "deepnav config: give a board file or --list\n");
-      return 2;
+  // A library exception that a command lets through (OpenCV asserting on an argument, out of memory) ends
+  // it with the command's name and the message, exit code 1, never an abort.
+  try {
+    if (*rp) {
+      replay.realtime = realtime;
+      return runReplay(replay);
     }
-    return runConfig(board_path, list);
+    if (*rn) return deepnav::runServiceCommand(run, validate_only);
+    if (*dc) return deepnav::runDecodeCommand(decode_format, decode_path);
+    if (*iq) return runIqa(iqa_path);
+    if (*st) return deepnav::runStereoCommand(stereo);
+    if (*cb) return deepnav::runCalibrateCommand(calibrate);
+    if (*cf) {
+      if (!list && board_path.empty()) {
+        std::fprintf(stderr, "deepnav config: give a board file or --list\n");
+        return 2;
+      }
+      return runConfig(board_path, list);
+    }
+  } catch (const std::exception& e) {
+    const auto commands = app.get_subcommands();
+    std::fprintf(stderr, "deepnav %s: failed: %s\n", commands.empty() ? "" : commands.front()->get_name().c_str(),
+                 e.what());
+    return 1;
   }
   return 0;
 }

@@ -1,7 +1,9 @@
 #include "board/cli/stereo_command.h"
 
 #include <cstdio>
+#include <exception>
 #include <memory>
+#include <string>
 
 #include <opencv2/imgcodecs.hpp>
 
@@ -28,9 +30,28 @@ std::unique_ptr<DisparityEstimator> makeEstimator(const StereoCommandOptions& o,
   return sgbm;
 }
 
-}  // namespace
+// The pair's size against --max-pixels and --max-disp, before any matcher buffer exists. Empty: fits.
+std::string checkPairSize(const StereoCommandOptions& o, const cv::Mat& left) {
+  const long long pixels = static_cast<long long>(left.cols) * left.rows;
+  if (pixels > o.max_pixels) {
+    return o.left_path + ": " + std::to_string(left.cols) + "x" + std::to_string(left.rows) + " (" +
+           std::to_string(pixels) + " pixels) is larger than --max-pixels " + std::to_string(o.max_pixels);
+  }
+  const bool sgbm = o.method != "elas";
+  // SGBM searches the range rounded up to 16 and OpenCV throws when that reaches the width; a range that
+  // reaches the width holds disparities no pixel can have (u - d < 0 for every column), for ELAS too.
+  const int searched = sgbm ? (o.max_disparity_px + 15) / 16 * 16 : o.max_disparity_px;
+  if (searched < left.cols) return "";
+  const int largest = sgbm ? sgbmLargestDisparities(left.cols) : left.cols - 1;
+  std::string why = "--max-disp " + std::to_string(o.max_disparity_px) +
+                    (sgbm ? " (searched as " + std::to_string(searched) + ", a multiple of 16)" : std::string()) +
+                    " reaches the image width of " + std::to_string(left.cols) + " px (" + o.left_path + "); " +
+                    o.method;
+  return why + (largest >= 1 ? " admits at most --max-disp " + std::to_string(largest) + " on it"
+                             : " needs an image wider than 16 px");
+}
 
-int runStereoCommand(const StereoCommandOptions& o) {
+int runStereo(const StereoCommandOptions& o) {
   const cv::Mat left = cv::imread(o.left_path, cv::IMREAD_COLOR);
   const cv::Mat right = cv::imread(o.right_path, cv::IMREAD_COLOR);
   if (left.empty() || right.empty()) {
@@ -40,6 +61,10 @@ int runStereoCommand(const StereoCommandOptions& o) {
   if (left.size() != right.size()) {
     std::fprintf(stderr, "deepnav stereo: %s and %s differ in size\n", o.left_path.c_str(), o.right_path.c_str());
     return 1;
+  }
+  if (const std::string why = checkPairSize(o, left); !why.empty()) {
+    std::fprintf(stderr, "deepnav stereo: %s\n", why.c_str());
+    return 2;
   }
   const auto estimator = makeEstimator(o, left.cols, left.rows);
   cv::Mat disparity;
@@ -57,6 +82,20 @@ int runStereoCommand(const StereoCommandOptions& o) {
   std::printf("%s: %dx%d, %.1f %% of pixels with a disparity\n", o.out_path.c_str(), disparity.cols, disparity.rows,
               100.0 * valid / static_cast<double>(disparity.total()));
   return 0;
+}
+
+}  // namespace
+
+// A library exception (OpenCV asserting on an argument, out of memory) ends the command with its message
+// instead of an abort.
+int runStereoCommand(const StereoCommandOptions& o) {
+  try {
+    return runStereo(o);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "deepnav stereo: %s on %s and %s failed: %s\n", o.method.c_str(), o.left_path.c_str(),
+                 o.right_path.c_str(), e.what());
+    return 1;
+  }
 }
 
 }  // namespace deepnav

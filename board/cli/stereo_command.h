@@ -9,6 +9,9 @@ struct StereoCommandOptions {
   std::string method = "elas";  // elas | sgbm | sgbm-wls
   int max_disparity_px = 64;
   std::string out_path;         // .pfm
+  // Largest pair accepted, in pixels per image: refused before any matcher buffer is allocated (ELAS
+  // needs about 100 bytes per pixel: an 8000x8000 pair took 6.6 GB). 10 MP takes a 4K pair (4096x2160).
+  long long max_pixels = 10'000'000;
 };
 
 // `deepnav stereo`: dense disparity of a rectified pair, written as PFM. Returns the exit code.

@@ -3,7 +3,13 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
+#include <string>
+#include <tuple>
+#include <utility>
+
+#include <sys/wait.h>
 
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
@@ -48,6 +54,58 @@ TEST_P(StereoCli, ElasPfmMeetsTheD1Target) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Middlebury, StereoCli, ::testing::Values("middlebury-tsukuba", "middlebury-venus"));
+
+// `deepnav stereo ARGS` with stderr captured: {exit code (-1: killed by a signal), stderr}.
+std::pair<int, std::string> runStereo(const std::string& args) {
+  const std::string err = ::testing::TempDir() + "stereo_cli_stderr.txt";
+  const std::string cmd = std::string(DEEPNAV_BIN_DIR) + "/deepnav stereo " + args + " > /dev/null 2> " + err;
+  const int status = std::system(cmd.c_str());
+  std::ifstream in(err);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text};
+}
+
+// A random grey pair of w x h written as PNG; returns "LEFT RIGHT".
+std::string randomPair(int w, int h) {
+  const std::string base = ::testing::TempDir() + "stereo_cli_" + std::to_string(w) + "x" + std::to_string(h);
+  cv::Mat left(h, w, CV_8UC1), right(h, w, CV_8UC1);
+  cv::randu(left, 0, 255);
+  cv::randu(right, 0, 255);
+  EXPECT_TRUE(cv::imwrite(base + "_l.png", left));
+  EXPECT_TRUE(cv::imwrite(base + "_r.png", right));
+  return base + "_l.png " + base + "_r.png";
+}
+
+// Issue 21: SGBM aborted (SIGABRT, uncaught cv::Exception in buffer_area.cpp) when the range rounded up to
+// 16 reached the width: any 16x16 image, or 128 px wide at 128. Now refused with the largest range that fits.
+TEST(StereoCliArguments, AnSgbmRangeReachingTheImageWidthIsRefusedNotAborted) {
+  const std::string out = " --out " + ::testing::TempDir() + "stereo_cli_range.pfm";
+  const std::string small = randomPair(16, 16);
+  for (const char* method : {"sgbm", "sgbm-wls"}) {
+    const auto [code, text] = runStereo(small + " --method " + method + out);
+    EXPECT_EQ(code, 2) << method << ": " << text;
+    EXPECT_NE(text.find("reaches the image width of 16 px"), std::string::npos) << text;
+  }
+  const std::string wide = randomPair(128, 64);
+  auto [code, text] = runStereo(wide + " --method sgbm --max-disp 128" + out);
+  EXPECT_EQ(code, 2) << text;
+  EXPECT_NE(text.find("admits at most --max-disp 112"), std::string::npos) << text;
+  std::tie(code, text) = runStereo(wide + " --method sgbm --max-disp 112" + out);
+  EXPECT_EQ(code, 0) << text;
+  std::tie(code, text) = runStereo(wide + " --method elas --max-disp 128" + out);
+  EXPECT_EQ(code, 2) << text;
+}
+
+// Issue 21: ELAS on an 8000x8000 pair took 6.6 GB. A pair above --max-pixels is refused before matching.
+TEST(StereoCliArguments, APairLargerThanMaxPixelsIsRefusedBeforeMatching) {
+  const std::string out = " --out " + ::testing::TempDir() + "stereo_cli_pixels.pfm";
+  const std::string pair = randomPair(400, 300);
+  auto [code, text] = runStereo(pair + " --method elas --max-pixels 100000" + out);
+  EXPECT_EQ(code, 2) << text;
+  EXPECT_NE(text.find("400x300 (120000 pixels) is larger than --max-pixels 100000"), std::string::npos) << text;
+  std::tie(code, text) = runStereo(pair + " --method elas --max-pixels 120000" + out);
+  EXPECT_EQ(code, 0) << text;
+}
 
 }  // namespace
 }  // namespace deepnav

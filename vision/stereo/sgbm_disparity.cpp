@@ -22,6 +22,8 @@ bool SgbmDisparity::init(const SgbmParams& params, int width_px, int height_px) 
   }
   params_ = params;
   params_.num_disparities = (params.num_disparities + 15) / 16 * 16;
+  // OpenCV would throw from compute(), on some sizes from a destructor (std::terminate, uncatchable).
+  if (params_.num_disparities > sgbmLargestDisparities(width_px)) return false;
   width_px_ = width_px;
   height_px_ = height_px;
   const int area = params.block_size_px * params.block_size_px;

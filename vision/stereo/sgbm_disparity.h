@@ -23,10 +23,16 @@ struct SgbmParams {
   double wls_sigma_color = 1.5;
 };
 
+// The widest range OpenCV 4.6's StereoSGBM (MODE_SGBM_3WAY, minDisparity 0) runs with on images
+// width_px wide: its searched range (num_disparities rounded up to 16) must stay below the width, else
+// compute() throws cv::Exception (core/src/buffer_area.cpp). 0 when no range fits (width <= 16).
+inline int sgbmLargestDisparities(int width_px) { return width_px > 16 ? (width_px - 1) / 16 * 16 : 0; }
+
 // Semi-global matching through OpenCV, optionally post-filtered by the ximgproc WLS filter (which
 // needs a right-view SGBM as well and returns a disparity everywhere).
 class SgbmDisparity final : public DisparityEstimator {
  public:
+  // False on a bad parameter, or a range wider than sgbmLargestDisparities(width_px).
   bool init(const SgbmParams& params, int width_px, int height_px);
   bool compute(const cv::Mat& left, const cv::Mat& right, cv::Mat* disparity_px) override;
 
