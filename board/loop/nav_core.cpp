@@ -76,6 +76,9 @@ void NavCore::count(FuseResult r) {
 
 void NavCore::consumeVision(const VisionResult& v) {
   ++counters_.vision;
+  // A result of a pair older than the delay window cannot be fused (nor its pair cloned): a late drop,
+  // counted here once per result, as a late sensor sample is.
+  if (ekf_.beyondWindow(v.t_us)) ++counters_.dropped_late;
   if (v.frame_ok && v.image_quality >= 0.0) image_quality_ = v.image_quality;
   if (v.frame_ok) map_ready_ = v.map_ready;
   const bool stage2 = stage_.stage() == NavStage::kOptimised;
@@ -121,6 +124,7 @@ void NavCore::recordEstimatorStates(TimeUs t_us) {
 }
 
 const NavSolution& NavCore::tick(TimeUs t_us) {
+  ekf_.noteLoopTime(t_us);
   solution_ = ekf_.solution(t_us);
   // The fusions since the last tick (nav/ekf/fusion_diagnostic.h), before this tick's solution.
   for (int i = 0; sink_ != nullptr && i < ekf_.diagnostics().size(); ++i) sink_->recordFusion(ekf_.diagnostics().at(i));

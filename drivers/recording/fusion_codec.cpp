@@ -12,8 +12,8 @@ namespace {
 
 constexpr std::array<std::string_view, kSrcCount + 1> kSourceNames = {
     "imu", "dvl", "depth", "heading", "attitude", "markers", "vo_orb", "vo_planes", "camera", "unknown"};
-constexpr std::array<std::string_view, 8> kReasonNames = {
-    "fused", "fused_deweighted", "gate", "unusable", "bad_input", "frozen", "late", "mag_disturbance"};
+constexpr std::array<std::string_view, 9> kReasonNames = {
+    "fused", "fused_deweighted", "gate", "unusable", "bad_input", "frozen", "late", "mag_disturbance", "future_stamp"};
 
 }  // namespace
 

@@ -60,19 +60,21 @@ bool RecordingWriter::open(const std::string& path, const RecordingOptions& opti
 
 bool RecordingWriter::close(std::string* error) { return writer_.close(error); }
 
-void RecordingWriter::put(Topic topic, TimeUs t_us, std::size_t size) {
+void RecordingWriter::put(Topic topic, TimeUs log_us, TimeUs publish_us, std::size_t size) {
   const auto i = static_cast<std::size_t>(topic);
   if (size == 0 || !writer_.isOpen() ||
-      !writer_.write(channel_[i], sequence_[i]++, toNs(t_us), toNs(t_us), buffer_.data(), size)) {
+      !writer_.write(channel_[i], sequence_[i]++, toNs(log_us), toNs(publish_us), buffer_.data(), size)) {
     ++failures_;
   }
 }
 
-void RecordingWriter::recordInput(const InputSample& sample) {
+void RecordingWriter::recordInput(const InputSample& sample) { recordInputArrived(sample, sampleTimeUs(sample)); }
+
+void RecordingWriter::recordInputArrived(const InputSample& sample, TimeUs arrival_us) {
   const TimeUs t_us = sampleTimeUs(sample);
-  put(inputTopic(sample), t_us, encodeInput(sample, buffer_.data(), buffer_.size()));
+  put(inputTopic(sample), arrival_us, t_us, encodeInput(sample, buffer_.data(), buffer_.size()));
   const std::size_t n = encodeInputCompanion(sample, buffer_.data(), buffer_.size());
-  if (n > 0) put(std::holds_alternative<DvlSample>(sample) ? Topic::kDvl : Topic::kPressure, t_us, n);
+  if (n > 0) put(std::holds_alternative<DvlSample>(sample) ? Topic::kDvl : Topic::kPressure, arrival_us, t_us, n);
 }
 
 void RecordingWriter::recordSolution(const NavSolution& s) {

@@ -26,8 +26,9 @@ struct RecordingOptions {
 
 // Writes a deepnav recording: one MCAP channel per topic (topics.h), ROS 2 schemas, CDR messages.
 // Synchronous: the bench replay and the simulator use it directly; live, QueuedRecorder runs it in a
-// thread of its own. Message log time = sample time (t_us), publish time = log time; file order is the
-// order of the calls, which for the loop is consumption order.
+// thread of its own. Message log time = sample time (t_us), publish time = log time, except for an input
+// recorded with its arrival time (log time = arrival, publish time = its stamp); file order is the order
+// of the calls, which for the loop is consumption order.
 class RecordingWriter : public RecordSink {
  public:
   bool open(const std::string& path, const RecordingOptions& options, std::string* error);
@@ -35,6 +36,9 @@ class RecordingWriter : public RecordSink {
   bool isOpen() const { return writer_.isOpen(); }
 
   void recordInput(const InputSample& sample) override;
+  // An input that reached the vehicle at arrival_us, whatever its stamp says (the simulator's clock
+  // jumps): a replay delivers it at its arrival, and the loop judges its stamp.
+  void recordInputArrived(const InputSample& sample, TimeUs arrival_us);
   void recordSolution(const NavSolution& solution) override;
   void recordFusion(const FusionDiagnostic& diagnostic) override;
   void recordEstimatorStates(const EstimatorStates& states) override;
@@ -52,7 +56,8 @@ class RecordingWriter : public RecordSink {
   std::uint64_t messages() const { return writer_.messageCount(); }
 
  private:
-  void put(Topic topic, TimeUs t_us, std::size_t size);
+  void put(Topic topic, TimeUs t_us, std::size_t size) { put(topic, t_us, t_us, size); }
+  void put(Topic topic, TimeUs log_us, TimeUs publish_us, std::size_t size);
 
   mcap::Writer writer_;
   std::array<std::uint16_t, kTopicCount> channel_{};

@@ -114,7 +114,7 @@ const ros::MsgDefinitions& projectDefinitions() {
        "uint8 source # 0 imu, 1 dvl, 2 depth, 3 heading, 4 attitude, 5 markers, 6 vo_orb, 7 vo_planes\n"
        "string source_name\n"
        "uint8 reason # 0 fused, 1 fused_deweighted, 2 gate, 3 unusable, 4 bad_input, 5 frozen, 6 late, "
-       "7 mag_disturbance\n"
+       "7 mag_disturbance, 8 future_stamp\n"
        "string reason_name\nbool fused\n"
        "float64[] innovation # z - h(x): dvl m/s (x y z, DVL frame), depth m, heading rad (ENU yaw), "
        "attitude rad (roll pitch), poses m and rad (x y z rx ry rz)\n"

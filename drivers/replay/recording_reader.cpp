@@ -51,7 +51,9 @@ bool RecordingReader::handle(const mcap::MessageView& m, const Callback& callbac
     case Topic::kVisionResult:
       e.kind = ReplayEvent::Kind::kInput;
       if (!decodeInput(topic, m.data, m.size, &e.input)) break;
-      e.t_us = sampleTimeUs(e.input);
+      // Delivered at its arrival: the log time where it differs from the stamp (publish time), as the
+      // simulator records a sensor whose clock jumped (RecordingWriter::recordInputArrived).
+      e.t_us = m.log_time_ns == m.publish_time_ns ? sampleTimeUs(e.input) : static_cast<TimeUs>(m.log_time_ns / 1000);
       return callback(e);
     case Topic::kNavSolution:
       e.kind = ReplayEvent::Kind::kSolution;

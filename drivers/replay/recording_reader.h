@@ -20,7 +20,7 @@ namespace deepnav {
 struct ReplayEvent {
   enum class Kind { kInput, kSolution, kFrame, kTruth, kFrameTruth };
   Kind kind = Kind::kInput;
-  TimeUs t_us = 0;
+  TimeUs t_us = 0;  // when the loop meets it: an input's arrival (its stamp unless recorded otherwise)
   InputSample input;
   NavSolution solution;
   TruthSample truth;

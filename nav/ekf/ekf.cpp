@@ -114,6 +114,13 @@ void Ekf::setImu(const ImuSample& sample) {
     health_.countBadInput(kSrcImu);
     return;
   }
+  if (aligned_ && health_.noteFrozen(kSrcImu, sampleFingerprint(sample), config_.imu_stuck_after_samples)) {
+    // A frozen IMU repeats its last message: integrating it would turn a constant rate and specific
+    // force into a drifting pose. Refused, the IMU goes stale and the state coasts (Ekf::coast) as in an
+    // outage; the first good sample after it bridges the gap (imu_gap_bridge.h).
+    noteRefusedAtDoor(sample.t_us, kSrcImu, FusionReason::kFrozen);
+    return;
+  }
   noteInputTime(sample.t_us);
   if (!aligned_) {
     alignFromImu(sample);
@@ -357,6 +364,7 @@ FuseResult Ekf::submit(const LoggedMeasurement& e, NavSource src, bool valid) {
     noteRefusedAtDoor(e.t_us, src, FusionReason::kBadInput);
     return {FuseStatus::kBadInput, 0.0};
   }
+  if (refuseFutureStamp(src, e.t_us)) return {FuseStatus::kBadInput, 0.0};
   noteInputTime(e.t_us);
   if (!aligned_) return {FuseStatus::kNotAligned, 0.0};
   if (e.t_us > state_.t_us) {
@@ -425,9 +433,21 @@ void Ekf::trimHistory() {
   while (log_.size() > 0 && log_.at(0).t_us < oldest) log_.popOldest();
 }
 
+// A sample is stamped at or before its arrival, which is at most one tick after the loop's latest tick.
+// One stamped further ahead than the delay window reaches back comes from a clock that jumped: refused
+// before it can move the stale clocks (noteInputTime), feed the lockout logic or wait in the log to be
+// fused at a wrong time. It raises the source's reject flag until its next sample (SourceHealth).
+bool Ekf::refuseFutureStamp(NavSource src, TimeUs t_us) {
+  if (loop_t_us_ < 0 || !aligned_ || src == kSrcCount || t_us - loop_t_us_ <= config_.max_delay_us) return false;
+  health_.noteBadStamp(src);
+  noteRefusedAtDoor(t_us, src, FusionReason::kFutureStamp);
+  return true;
+}
+
 bool Ekf::admitAidingSample(NavSource src, TimeUs t_us, std::uint64_t fingerprint, const Eigen::Vector3d& value,
                             bool angles, double tolerance) {
   if (!initialised_) return true;
+  if (refuseFutureStamp(src, t_us)) return false;
   if (health_.noteFrozen(src, fingerprint, config_.stuck_after_samples)) {
     if (aligned_) noteRefusedAtDoor(t_us, src, FusionReason::kFrozen);
     return false;

@@ -66,6 +66,11 @@ class Ekf {
   // Before alignment they feed the roll/pitch alignment.
   void setImu(const ImuSample& sample);
 
+  // The loop's clock at its latest tick: a sample consumed after it arrived at most one tick later, so
+  // one stamped further ahead of it than the delay window carries a jumped clock and is refused
+  // (FusionReason::kFutureStamp). Never called (bare filter, unit tests): no such check.
+  void noteLoopTime(TimeUs t_us) { loop_t_us_ = t_us; }
+
   FuseResult fuseDvl(const DvlSample& m);
   FuseResult fuseDepth(const DepthSample& m);
   FuseResult fuseHeading(const HeadingSample& m);
@@ -85,6 +90,9 @@ class Ekf {
 
   bool initialised() const { return initialised_; }
   bool aligned() const { return aligned_; }
+  // True when a measurement taken at t_us can no longer be fused: older than the oldest snapshot the
+  // delay window keeps (it would be dropped late).
+  bool beyondWindow(TimeUs t_us) const { return aligned_ && (history_.empty() || t_us < history_.timeAt(0)); }
   const FilterState& state() const { return state_; }
   const SourceHealth& health(NavSource src) const { return health_.source(src); }
   const EkfCounters& counters() const { return counters_; }
@@ -117,6 +125,7 @@ class Ekf {
   void restartAfterImuGap(const ImuSample& sample);
   void startHistory(const ImuSample& sample);
   bool isValidImu(const ImuSample& sample) const;
+  bool refuseFutureStamp(NavSource src, TimeUs t_us);
   std::uint32_t statusBits(TimeUs now_us) const;
   void coast(TimeUs now_us, NavSolution* s) const;
   void noteInputTime(TimeUs t_us);
@@ -147,6 +156,7 @@ class Ekf {
   std::uint64_t next_seq_ = 0;
   TimeUs last_imu_t_us_ = 0;
   TimeUs latest_input_t_us_ = 0;
+  TimeUs loop_t_us_ = -1;  // noteLoopTime(); -1: not known
   bool has_last_imu_ = false;
 };
 

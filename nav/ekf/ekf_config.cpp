@@ -151,6 +151,9 @@ bool checkTiming(const EkfConfig& c, std::string* e) {
   }
   if (c.max_clones < 1 || c.max_clones > es::kMaxClones) return fail(e, "max_clones", "must be in [1, es::kMaxClones]");
   if (c.align_imu_samples < 1) return fail(e, "align_imu_samples", "must be >= 1");
+  if (c.imu_stuck_after_samples < 0 || c.imu_stuck_after_samples == 1) {
+    return fail(e, "imu_stuck_after_samples", "must be 0 (off) or >= 2");
+  }
   if (c.stuck_after_samples < 0 || c.stuck_after_samples == 1) {
     return fail(e, "stuck_after_samples", "must be 0 (off) or >= 2");
   }

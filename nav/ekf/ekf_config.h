@@ -114,6 +114,10 @@ struct EkfConfig {
   // source is refused as frozen (a real sensor's noise never repeats every bit; a quantised one at rest
   // may, and then refusing a value the filter already has loses nothing); 0: not checked.
   int stuck_after_samples = 5;
+  // The same for the IMU, whose six channels of noise (rate and specific force) never repeat together
+  // on a working unit: refused, the IMU goes stale and the state coasts as in an IMU outage. 0 (the
+  // bare filter's default, whose tests feed a noiseless resting IMU): not checked; boards set it.
+  int imu_stuck_after_samples = 0;
   // A DVL, depth, compass or AHRS source whose samples have all been rejected for this long (a gate
   // lockout: the state drifted away while the filter grew overconfident) gets the states it observes
   // decorrelated and their variances raised to the initial sigmas, once per period, so that the gate

@@ -30,4 +30,10 @@ std::uint64_t sampleFingerprint(const HeadingSample& m) { return mix(kFnvOffset,
 
 std::uint64_t sampleFingerprint(const AttitudeSample& m) { return mix(mix(kFnvOffset, m.roll_rad), m.pitch_rad); }
 
+std::uint64_t sampleFingerprint(const ImuSample& m) {
+  std::uint64_t h = kFnvOffset;
+  for (int i = 0; i < 3; ++i) h = mix(mix(h, m.w_imu_radps[i]), m.f_imu_mps2[i]);
+  return h;
+}
+
 }  // namespace deepnav

@@ -5,6 +5,7 @@
 #include "nav/types/depth_sample.h"
 #include "nav/types/dvl_sample.h"
 #include "nav/types/heading_sample.h"
+#include "nav/types/imu_sample.h"
 
 namespace deepnav {
 
@@ -14,5 +15,6 @@ std::uint64_t sampleFingerprint(const DvlSample& m);
 std::uint64_t sampleFingerprint(const DepthSample& m);
 std::uint64_t sampleFingerprint(const HeadingSample& m);
 std::uint64_t sampleFingerprint(const AttitudeSample& m);
+std::uint64_t sampleFingerprint(const ImuSample& m);
 
 }  // namespace deepnav

@@ -34,6 +34,7 @@ void SourceHealthMonitor::record(NavSource src, FuseStatus previous, FuseStatus 
   if (now == FuseStatus::kRejected) ++h.counters.rejected;
   h.last_seen_t_us = std::max(h.last_seen_t_us, t_us);
   h.last_rejected = now == FuseStatus::kRejected;
+  h.last_stamp_bad = false;
   h.last_test_ratio = test_ratio;
 }
 
@@ -83,7 +84,7 @@ std::uint32_t SourceHealthMonitor::faultBits(TimeUs now_us) const {
   for (int i = 0; i < kSrcCount; ++i) {
     const auto src = static_cast<NavSource>(i);
     if (isStale(src, now_us)) bits |= staleBit(src);
-    if (source(src).last_rejected) bits |= rejectBit(src);
+    if (source(src).last_rejected || source(src).last_stamp_bad) bits |= rejectBit(src);
   }
   return bits;
 }

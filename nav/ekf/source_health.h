@@ -19,6 +19,7 @@ struct SourceCounters {
   std::uint32_t bad_input = 0;
   std::uint32_t frozen = 0;       // refused: bit-identical to the previous ones (EkfConfig::stuck_after_samples)
   std::uint32_t gate_resets = 0;  // lockout recoveries (EkfConfig::gate_reset_after_us, gate_reset.h)
+  std::uint32_t bad_stamps = 0;   // refused: stamped beyond the fusion window ahead of the IMU clock
 };
 
 struct SourceHealth {
@@ -26,6 +27,7 @@ struct SourceHealth {
   TimeUs last_accepted_t_us = -1;  // -1: never
   TimeUs last_seen_t_us = -1;      // latest valid sample that reached the gate (accepted or rejected)
   bool last_rejected = false;      // outcome of the latest (in capture time) fused sample, or frozen
+  bool last_stamp_bad = false;     // a sample was refused for its stamp since the latest fused one
   double last_test_ratio = 0.0;
   std::uint64_t last_fingerprint = 0;  // sample_fingerprint.h of the latest sample
   int repeats = 0;                     // consecutive samples with that fingerprint
@@ -47,6 +49,15 @@ class SourceHealthMonitor {
   void record(NavSource src, FuseStatus previous, FuseStatus now, TimeUs t_us, double test_ratio);
   void countDroppedLate(NavSource src) { ++at(src).counters.dropped_late; }
   void countBadInput(NavSource src) { ++at(src).counters.bad_input; }
+  // A sample whose stamp cannot be its capture time (the source's clock jumped ahead): counted as bad
+  // input and as a bad stamp; it raises the reject flag until the source's next fused sample, without
+  // counting towards a gate lockout (the filter never saw it).
+  void noteBadStamp(NavSource src) {
+    SourceHealth& h = at(src);
+    ++h.counters.bad_input;
+    ++h.counters.bad_stamps;
+    h.last_stamp_bad = true;
+  }
   // Notes a sample's fingerprint; true when it is the limit-th (or later) identical one in a row (limit 0:
   // never). Such a sample is counted frozen and raises the reject flag; it does not count as seen, so a
   // frozen source also goes stale after its timeout.

@@ -69,6 +69,7 @@ void VoFusion::cloneFrame(TimeUs t_us, Ekf* ekf) {
   if (!target) return;
   const std::uint32_t id = next_id_++;
   const FuseResult r = ekf->clonePose(t_us, id);
+  if (r.status == FuseStatus::kDroppedLate) ++counters_.clones_late;
   if (r.status != FuseStatus::kAccepted && r.status != FuseStatus::kQueued) return;
   *target = Slot{true, t_us, id};
   ++counters_.clones;

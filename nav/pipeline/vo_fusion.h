@@ -15,6 +15,7 @@ struct VoFusionCounters {
   std::uint32_t rejected = 0;      // by the EKF gate, bad input, too late
   std::uint32_t no_clone = 0;      // reference frame without a clone (before stage 2, or released)
   std::uint32_t clones = 0;        // clones taken
+  std::uint32_t clones_late = 0;   // pairs older than the delay window: no clone, later results refer to nothing
   std::array<std::uint32_t, 3> accepted_by_source{};  // index VoSource
 };
 

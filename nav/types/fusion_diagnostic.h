@@ -19,6 +19,7 @@ enum class FusionReason : std::uint8_t {
   kFrozen,           // bit-identical to the previous samples of its source
   kLate,             // older than the delay window
   kMagDisturbance,   // compass refused: magnetic disturbance (mag_disturbance.h)
+  kFutureStamp,      // stamped further ahead of the IMU clock than the delay window (a clock jump)
 };
 
 // One measurement's fusion, in the spirit of PX4's estimator_aid_src_* messages: what the filter saw

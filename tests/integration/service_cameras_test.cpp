@@ -173,8 +173,7 @@ TEST(ServiceCameras, GigEStereoPairReachesTheVisionWorkerThroughDeepnavRun) {
   EXPECT_GE(cameraCount(last_status), 3) << last_status;
   EXPECT_GE(fakes.fill[0].frames.load(), 10u);
 
-  // AND the recording is complete, holds the cameras' pixels exactly, pairs from one trigger each (the
-  // two cameras made them within a few ms; triggers are 100 ms apart), and
+  // AND the recording is complete, holds the cameras' pixels exactly, pairs from one trigger each, and
   // the vision worker's results; the solution carries the image quality m_I
   RecordingReader reader;
   std::string error;
@@ -182,7 +181,12 @@ TEST(ServiceCameras, GigEStereoPairReachesTheVisionWorkerThroughDeepnavRun) {
   EXPECT_FALSE(reader.truncated());
   EXPECT_GE(reader.count(Topic::kLeftImage), 5u);
   EXPECT_GE(reader.count(Topic::kVisionResult), 3u);
+  // Triggers are 100 ms apart: two images of one trigger are made closer than half that, two of adjacent
+  // triggers further apart. Each fake camera fills its image on its own thread of this process, which a
+  // loaded machine (ctest -j2) delays by tens of ms: CI once saw one pair of 37 more than 30 ms apart.
+  constexpr std::int64_t kHalfTriggerPeriodUs = 50'000;
   int pairs = 0, bad = 0, one_trigger = 0;
+  std::int64_t widest_us = 0;
   double image_quality = -1.0;
   ASSERT_TRUE(reader.forEach(
       false,
@@ -193,7 +197,14 @@ TEST(ServiceCameras, GigEStereoPairReachesTheVisionWorkerThroughDeepnavRun) {
         std::int64_t made_left_us = 0, made_right_us = 0;
         bad += !footage.matches(e.frame->left, 0, &kl, &made_left_us);
         bad += !footage.matches(e.frame->right, 1, &kr, &made_right_us);
-        one_trigger += std::abs(made_left_us - made_right_us) < 30'000;
+        const std::int64_t apart_us = std::abs(made_left_us - made_right_us);
+        widest_us = std::max(widest_us, apart_us);
+        if (apart_us >= kHalfTriggerPeriodUs) {
+          ADD_FAILURE() << "pair " << pairs << " (sequence " << e.frame->sequence << ", t " << e.frame->t_us
+                        << " us): left frame " << kl << " made at " << made_left_us << " us, right frame " << kr
+                        << " made at " << made_right_us << " us";
+        }
+        one_trigger += apart_us < kHalfTriggerPeriodUs;
         ++pairs;
         return true;
       },
@@ -201,11 +212,14 @@ TEST(ServiceCameras, GigEStereoPairReachesTheVisionWorkerThroughDeepnavRun) {
       << error;
   EXPECT_GE(pairs, 5);
   EXPECT_EQ(bad, 0);
-  EXPECT_EQ(one_trigger, pairs);
+  EXPECT_EQ(one_trigger, pairs) << "widest pair " << widest_us << " us apart";
   EXPECT_GE(image_quality, 0.0);
   EXPECT_LE(image_quality, 1.0);
-  std::printf("cameras through deepnav run: %d pairs recorded, %llu vision results, last status: %s; stop %.3f s\n",
-              pairs, static_cast<unsigned long long>(reader.count(Topic::kVisionResult)), last_status.c_str(), stop_s);
+  std::printf(
+      "cameras through deepnav run: %d pairs recorded (widest %.1f ms apart), %llu vision results, last status: %s; "
+      "stop %.3f s\n",
+      pairs, widest_us / 1e3, static_cast<unsigned long long>(reader.count(Topic::kVisionResult)), last_status.c_str(),
+      stop_s);
 }
 
 }  // namespace

@@ -90,11 +90,11 @@ void recordEvent(const SimEvent& e, const SensorSimulator& sim, const Eigen::Vec
     case SimStream::kGroundTruth:
       writer->recordTruth(toTruth(std::get<GroundTruthSample>(e.sample), scene_to_odom_m));
       break;
-    case SimStream::kImu: writer->recordInput(std::get<ImuSample>(e.sample)); break;
-    case SimStream::kDvl: writer->recordInput(std::get<DvlSample>(e.sample)); break;
-    case SimStream::kCompass: writer->recordInput(std::get<HeadingSample>(e.sample)); break;
-    case SimStream::kAttitude: writer->recordInput(std::get<AttitudeSample>(e.sample)); break;
-    case SimStream::kDepth: writer->recordInput(std::get<DepthSample>(e.sample)); break;
+    case SimStream::kImu: writer->recordInputArrived(std::get<ImuSample>(e.sample), e.t_us); break;
+    case SimStream::kDvl: writer->recordInputArrived(std::get<DvlSample>(e.sample), e.t_us); break;
+    case SimStream::kCompass: writer->recordInputArrived(std::get<HeadingSample>(e.sample), e.t_us); break;
+    case SimStream::kAttitude: writer->recordInputArrived(std::get<AttitudeSample>(e.sample), e.t_us); break;
+    case SimStream::kDepth: writer->recordInputArrived(std::get<DepthSample>(e.sample), e.t_us); break;
     case SimStream::kCamera:
       ++summary->camera_ticks;
       frames->record(std::get<CameraTick>(e.sample), sim, scene_to_odom_m, writer, summary);

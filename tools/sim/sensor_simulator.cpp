@@ -124,6 +124,7 @@ void SensorSimulator::produce(int channel) {
   const KinematicState truth = trajectory_.stateAt(usToS(t_us));
   // Measure first, even if the sample is then dropped, so faults never shift the noise sequence.
   SimSample sample = measure(stream, truth, t_us, index);
+  TimeUs arrival_us = t_us;  // when the sample reaches the vehicle's computer
   if (stream != SimStream::kGroundTruth) {
     const FaultDecision d = faults_.decide(stream, usToS(t_us), index, c.fault_rng);
     if (d.drop) {
@@ -137,11 +138,18 @@ void SensorSimulator::produce(int channel) {
     c.has_last = true;
     TimeUs stamp_us = t_us + d.jitter_us;
     if (timing_active_) stamp_us += scenario_.timing.of(stream).shift_us(t_us);  // content stays at t_us
+    arrival_us = stamp_us;
+    // A sensor whose clock jumped still delivers each sample when it is measured; only the stamp it
+    // carries is wrong. So the sample keeps its place in the stream (delivery order, the recording's log
+    // time) and the loop can see the stamp disagree with its own clock, as it would on the vehicle.
+    // Camera frames are delivered at their stamp (the recording orders frames by stamp).
+    stamp_us += d.clock_offset_us;
+    if (stream == SimStream::kCamera) arrival_us = stamp_us;
     std::visit([stamp_us](auto& s) { s.t_us = stamp_us; }, sample);
   }
   ++c.emitted;
   SimEvent event;
-  event.t_us = std::visit([](const auto& s) { return s.t_us; }, sample);
+  event.t_us = arrival_us;
   event.stream = stream;
   event.sample = std::move(sample);
   pushPending(std::move(event));

@@ -16,8 +16,9 @@ namespace deepnav::sim {
 using SimSample = std::variant<GroundTruthSample, ImuSample, DvlSample, HeadingSample, AttitudeSample,
                                DepthSample, CameraTick>;
 
-// One element of the simulator's time-ordered output: the stream it belongs to, its stamp (equal to the
-// sample's own t_us) and the sample. The variant's alternatives follow SimStream's order, so
+// One element of the simulator's time-ordered output: the stream it belongs to, when it reaches the
+// vehicle (the sample's own stamp t_us, except under a clock_jump fault, where only the stamp jumps) and
+// the sample. The variant's alternatives follow SimStream's order, so
 // sample.index() == static_cast<size_t>(stream).
 struct SimEvent {
   TimeUs t_us = 0;

@@ -78,7 +78,7 @@ FaultDecision FaultSchedule::decide(SimStream stream, double t_s, std::uint64_t 
         if (inSilence(f, t_s)) d.drop = true;
         break;
       case FaultKind::kClockJump:
-        d.jitter_us += static_cast<TimeUs>(std::llround(f.offset_ms * 1e3));
+        d.clock_offset_us += static_cast<TimeUs>(std::llround(f.offset_ms * 1e3));
         break;
     }
   }

@@ -15,7 +15,8 @@ struct FaultDecision {
   bool stuck = false;
   bool garbage = false;        // replace the content by random values (garbage_values.h)
   double outlier_sigma = 0.0;  // > 0: add +-outlier_sigma * noise sigma to every component
-  TimeUs jitter_us = 0;        // added to the stamp (time_jitter and clock_jump)
+  TimeUs jitter_us = 0;        // added to the stamp (time_jitter): the sample is delivered at its stamp
+  TimeUs clock_offset_us = 0;  // added to the stamp (clock_jump): the sample is delivered when it arrives
 };
 
 // The scenario's fault list, queried per sample. Random choices (hit or not, jitter) come from the
