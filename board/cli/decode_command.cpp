@@ -1,6 +1,8 @@
 #include "board/cli/decode_command.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <functional>
 #include <memory>
@@ -24,35 +26,92 @@ struct Counts {
   long messages = 0, bad = 0, ignored = 0;
 };
 
+// Bad frames seen after the individual lines stopped: the byte range they cover and why.
+struct BadRange {
+  static constexpr int kReasons = 4;
+  uint64_t first = 0, end = 0;  // stream offsets, end exclusive
+  long count = 0, other_reasons = 0;
+  const char* reason[kReasons] = {};
+  long reason_count[kReasons] = {};
+  void add(uint64_t offset, size_t skipped, const char* why);
+};
+
+void BadRange::add(uint64_t offset, size_t skipped, const char* why) {
+  if (count == 0) first = offset;
+  ++count;
+  end = std::max(end, offset + std::max<size_t>(skipped, 1));
+  for (int i = 0; i < kReasons; ++i) {
+    if (reason[i] == nullptr) reason[i] = why;
+    if (reason[i] == why || std::strcmp(reason[i], why) == 0) return void(++reason_count[i]);
+  }
+  ++other_reasons;
+}
+
+// Prints each decoded message, and the bad frames: the first kLines one line each, then one line per
+// byte range, a range closing each time the bad-frame count doubles, so stderr stays a few KB whatever
+// the input (10 MB of noise is about 25 range lines).
 class Reporter {
  public:
+  static constexpr long kLines = 100;
   explicit Reporter(std::string path) : path_(std::move(path)) {}
   void message(const std::string& json) {
     std::printf("%s\n", json.c_str());
     ++counts_.messages;
   }
   void bad(uint64_t offset, const char* reason, size_t skipped = 0) {
-    if (skipped > 0) {
-      std::fprintf(stderr, "deepnav decode: %s: byte %llu: %s (%zu bytes skipped)\n", path_.c_str(),
-                   static_cast<unsigned long long>(offset), reason, skipped);
-    } else {
-      std::fprintf(stderr, "deepnav decode: %s: byte %llu: %s\n", path_.c_str(), static_cast<unsigned long long>(offset), reason);
-    }
     ++counts_.bad;
+    if (counts_.bad <= kLines) return line(offset, reason, skipped);
+    range_.add(offset, skipped, reason);
+    if (counts_.bad >= 2 * next_range_) flushRange();
   }
   void ignored() { ++counts_.ignored; }
+  // Prints the open range and the summary line.
+  void finish() {
+    flushRange();
+    std::fprintf(stderr, "deepnav decode: %s: %ld messages, %ld bad frames skipped, %ld other messages ignored\n", path_.c_str(),
+                 counts_.messages, counts_.bad, counts_.ignored);
+  }
   const Counts& counts() const { return counts_; }
 
  private:
+  void line(uint64_t offset, const char* reason, size_t skipped) {
+    const auto at = static_cast<unsigned long long>(offset);
+    if (skipped > 0) {
+      std::fprintf(stderr, "deepnav decode: %s: byte %llu: %s (%zu bytes skipped)\n", path_.c_str(), at, reason, skipped);
+    } else {
+      std::fprintf(stderr, "deepnav decode: %s: byte %llu: %s\n", path_.c_str(), at, reason);
+    }
+    if (counts_.bad == kLines) {
+      std::fprintf(stderr, "deepnav decode: %s: further bad frames are counted per byte range\n", path_.c_str());
+    }
+  }
+  void flushRange() {
+    next_range_ = counts_.bad;
+    if (range_.count == 0) return;
+    std::string why;
+    for (int i = 0; i < BadRange::kReasons && range_.reason[i] != nullptr; ++i) {
+      why += (i > 0 ? ", " : "") + std::to_string(range_.reason_count[i]) + " " + range_.reason[i];
+    }
+    if (range_.other_reasons > 0) why += ", " + std::to_string(range_.other_reasons) + " other";
+    std::fprintf(stderr, "deepnav decode: %s: bytes %llu-%llu: %ld bad frames (%s)\n", path_.c_str(),
+                 static_cast<unsigned long long>(range_.first), static_cast<unsigned long long>(range_.end), range_.count,
+                 why.c_str());
+    range_ = BadRange{};
+  }
+
   std::string path_;
   Counts counts_;
+  BadRange range_;
+  long next_range_ = kLines;  // bad-frame count when the open range started
 };
 
-// Streams the file through `framer` in 64 KiB reads; calls on_frame for each complete frame.
+// Streams the file through `framer` in 64 KiB reads; calls on_frame for each complete frame. At the end
+// of the file the framer frames what it holds without waiting for more.
 template <typename Framer>
 bool pump(std::ifstream& in, Framer* framer, Reporter* rep, const std::function<void(const RawFrame&)>& on_frame) {
   std::vector<char> chunk(65536);
   size_t have = 0, used = 0;
+  bool ended = false;
   while (true) {
     RawFrame f;
     FrameError e;
@@ -62,15 +121,51 @@ bool pump(std::ifstream& in, Framer* framer, Reporter* rep, const std::function<
     } else if (st == FrameStatus::kBad) {
       rep->bad(e.offset, e.reason, e.skipped);
     } else {
+      if (ended) return true;
       if (used == have) {
         in.read(chunk.data(), std::streamsize(chunk.size()));
         have = size_t(in.gcount());
         used = 0;
-        if (have == 0) return true;
+        if (have == 0) {
+          framer->endOfInput();
+          ended = true;
+          continue;
+        }
       }
       used += framer->push(reinterpret_cast<const uint8_t*>(chunk.data()) + used, have - used);
     }
   }
+}
+
+// Splits the file at LF or CR (a bare CR ends a line too) in 64 KiB reads; a line longer than
+// max_bytes is reported and skipped.
+void forEachLine(std::ifstream& in, size_t max_bytes, Reporter* rep,
+                 const std::function<void(std::string_view, uint64_t)>& on_line) {
+  std::vector<char> chunk(65536);
+  std::string line;
+  uint64_t offset = 0, line_offset = 0;
+  bool too_long = false;
+  const auto end_line = [&] {
+    if (too_long) rep->bad(line_offset, "line too long", size_t(offset - line_offset));
+    if (!too_long && !line.empty()) on_line(line, line_offset);
+    line.clear();
+    too_long = false;
+  };
+  while (in.read(chunk.data(), std::streamsize(chunk.size())) || in.gcount() > 0) {
+    const size_t n = size_t(in.gcount());
+    for (size_t i = 0; i < n; ++i, ++offset) {
+      const char c = chunk[i];
+      if (c == '\n' || c == '\r') {
+        end_line();
+        line_offset = offset + 1;
+      } else if (line.size() < max_bytes) {
+        line.push_back(c);
+      } else {
+        too_long = true;
+      }
+    }
+  }
+  end_line();
 }
 
 void decodePd0(std::ifstream& in, Reporter* rep) {
@@ -104,15 +199,15 @@ void decodeXsens(std::ifstream& in, Reporter* rep) {
   });
 }
 
-void decodeLines(std::ifstream& in, Reporter* rep, std::string_view starts, bool restart,
+void decodeLines(std::ifstream& in, Reporter* rep, std::string_view starts, std::string_view whole_line_starts,
                  const std::function<void(std::string_view, uint64_t)>& on_line) {
   LineFramer framer;
-  framer.init(starts, 4096, restart);
+  framer.init(starts, 4096, true, whole_line_starts);
   pump(in, &framer, rep, [&](const RawFrame& f) { on_line(std::string_view(reinterpret_cast<const char*>(f.data), f.size), f.offset); });
 }
 
 void decodeNmea(std::ifstream& in, Reporter* rep) {
-  decodeLines(in, rep, "$!", true, [&](std::string_view line, uint64_t offset) {
+  decodeLines(in, rep, "$!", "", [&](std::string_view line, uint64_t offset) {
     Nmea0183Sentence s;
     Nmea0183HeadingRecord r;
     const char* why = "";
@@ -125,7 +220,7 @@ void decodeNmea(std::ifstream& in, Reporter* rep) {
 }
 
 void decodePd6(std::ifstream& in, Reporter* rep) {
-  decodeLines(in, rep, ":", true, [&](std::string_view line, uint64_t offset) {
+  decodeLines(in, rep, ":", "", [&](std::string_view line, uint64_t offset) {
     Pd6Record r;
     const char* why = "";
     if (!parsePd6Line(line, &r, &why)) return rep->bad(offset, why, line.size());
@@ -134,11 +229,14 @@ void decodePd6(std::ifstream& in, Reporter* rep) {
 }
 
 void decodeWaterLinked(std::ifstream& in, Reporter* rep) {
-  decodeLines(in, rep, "w{", false, [&](std::string_view line, uint64_t offset) {
+  decodeLines(in, rep, "w{", "{", [&](std::string_view line, uint64_t offset) {
     WlDvlReport r;
     const char* why = "";
-    const WlDecode d = line[0] == '{' ? parseWlDvlJson(line, &r, &why) : parseWlDvlSerialLine(line, &r, &why);
+    size_t junk = 0;
+    const WlDecode d = parseWlDvlLine(line, &r, &why, &junk);
     if (d == WlDecode::kInvalid) return rep->bad(offset, why, line.size());
+    if (junk > 0) rep->bad(offset, "bytes before a Water Linked sentence", junk);
+    offset += junk;
     if (d == WlDecode::kOtherSentence) return rep->ignored();
     rep->message(wlDvlJson(r, offset));
   });
@@ -146,26 +244,21 @@ void decodeWaterLinked(std::ifstream& in, Reporter* rep) {
 
 void decodeCandump(std::ifstream& in, Reporter* rep) {
   N2kAssembler assembler;
-  std::string line;
-  uint64_t offset = 0;
-  while (std::getline(in, line)) {
-    const uint64_t here = offset;
-    offset += line.size() + 1;
+  forEachLine(in, 4096, rep, [&](std::string_view line, uint64_t here) {
     CanFrame frame;
     double t_s = -1;
     const char* why = "";
-    const CandumpLine c = parseCandumpLine(line, &frame, &t_s, &why);
-    if (c == CandumpLine::kSkip) continue;
-    if (c == CandumpLine::kInvalid) {
-      rep->bad(here, why, line.size());
-      continue;
-    }
+    size_t junk = 0;
+    const CandumpLine c = parseCandumpLineAfterJunk(line, &frame, &t_s, &why, &junk);
+    if (c == CandumpLine::kSkip) return;
+    if (c == CandumpLine::kInvalid) return rep->bad(here, why, line.size());
+    if (junk > 0) rep->bad(here, "bytes before a candump frame", junk);
     if (t_s == 0) t_s = -1;  // default candump format has no time stamps
     N2kMessage m;
     const N2kAssembler::Result r = assembler.add(frame, &m, &why);
-    if (r == N2kAssembler::Result::kError) rep->bad(here, why, line.size());
-    if (r == N2kAssembler::Result::kMessage) rep->message(n2kJson(m, here, t_s));
-  }
+    if (r == N2kAssembler::Result::kError) rep->bad(here + junk, why, line.size() - junk);
+    if (r == N2kAssembler::Result::kMessage) rep->message(n2kJson(m, here + junk, t_s));
+  });
 }
 
 }  // namespace
@@ -195,8 +288,7 @@ int runDecodeCommand(const std::string& format, const std::string& path) {
     std::fprintf(stderr, "deepnav decode: unknown format '%s' (pd0, pd6, wl-a50, nmea0183, n2k-candump, xsens)\n", format.c_str());
     return 2;
   }
-  std::fprintf(stderr, "deepnav decode: %s: %ld messages, %ld bad frames skipped, %ld other messages ignored\n", path.c_str(),
-               rep.counts().messages, rep.counts().bad, rep.counts().ignored);
+  rep.finish();
   return 0;
 }
 

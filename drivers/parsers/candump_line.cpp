@@ -42,7 +42,42 @@ bool parseByte(std::string_view hex, uint8_t* b) {
   return true;
 }
 
+// Start of the interface token two tokens before the last "[" (default format), or npos.
+size_t defaultFormatStart(std::string_view line) {
+  size_t i = line.rfind('[');
+  if (i == std::string_view::npos) return i;
+  for (int token = 0; token < 2; ++token) {
+    while (i > 0 && (line[i - 1] == ' ' || line[i - 1] == '\t')) --i;
+    if (i == 0) return std::string_view::npos;
+    while (i > 0 && line[i - 1] != ' ' && line[i - 1] != '\t') --i;
+  }
+  return i;
+}
+
+size_t afterLastStrayByte(std::string_view line) {
+  for (size_t i = line.size(); i > 0; --i) {
+    const auto c = uint8_t(line[i - 1]);
+    if ((c < 0x20 && c != '\t' && c != '\r') || c >= 0x7F) return i;
+  }
+  return std::string_view::npos;
+}
+
 }  // namespace
+
+CandumpLine parseCandumpLineAfterJunk(std::string_view line, CanFrame* f, double* t_s, const char** error,
+                                      size_t* junk_bytes) {
+  *junk_bytes = 0;
+  const CandumpLine c = parseCandumpLine(line, f, t_s, error);
+  if (c == CandumpLine::kFrame || (c == CandumpLine::kSkip && line.find('#') == std::string_view::npos)) return c;
+  // A comment ('#' first) may be a stray '#' glued before a frame: it is searched like a bad line.
+  const char* first_error = *error;
+  for (const size_t at : {afterLastStrayByte(line), line.rfind('('), defaultFormatStart(line)}) {
+    if (at == 0 || at >= line.size()) continue;
+    if (parseCandumpLine(line.substr(at), f, t_s, error) == CandumpLine::kFrame) return *junk_bytes = at, CandumpLine::kFrame;
+  }
+  *error = first_error;
+  return c;
+}
 
 CandumpLine parseCandumpLine(std::string_view line, CanFrame* f, double* t_s, const char** error) {
   *f = CanFrame{};
@@ -60,8 +95,11 @@ CandumpLine parseCandumpLine(std::string_view line, CanFrame* f, double* t_s, co
     const std::string_view frame = nextToken(&rest);
     const size_t hash = frame.find('#');
     if (hash == std::string_view::npos || !parseId(frame.substr(0, hash), f)) return invalid("candump frame is not ID#DATA");
+    // Nothing follows the frame in the log format: text after it is another line glued on.
+    if (!nextToken(&rest).empty()) return invalid("candump log line has text after the frame");
     std::string_view data = frame.substr(hash + 1);
     if (!data.empty() && data[0] == 'R') {
+      if (data.size() > 2 || (data.size() == 2 && (data[1] < '0' || data[1] > '8'))) return invalid("candump remote frame is not R or R0-R8");
       f->rtr = true;
       return CandumpLine::kFrame;
     }

@@ -1,4 +1,5 @@
 #pragma once
+#include <cstddef>
 #include <string_view>
 
 #include "drivers/parsers/can_frame.h"
@@ -13,5 +14,13 @@ namespace deepnav {
 enum class CandumpLine { kFrame, kSkip, kInvalid };
 
 CandumpLine parseCandumpLine(std::string_view line, CanFrame* frame, double* t_s, const char** error);
+
+// The same, for a line that may carry junk before the frame (a stray byte, noise without a line end):
+// when the whole line does not parse, it is parsed again from after its last control or non-ASCII
+// byte, from its last '(' (log format) and from the interface before its last "[n]" (default format).
+// A comment line is searched the same way (a stray '#' before a frame). *junk_bytes is how many
+// leading bytes were dropped that way (0 otherwise).
+CandumpLine parseCandumpLineAfterJunk(std::string_view line, CanFrame* frame, double* t_s, const char** error,
+                                      size_t* junk_bytes);
 
 }  // namespace deepnav

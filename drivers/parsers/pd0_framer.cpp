@@ -1,5 +1,7 @@
 #include "drivers/parsers/pd0_framer.h"
 
+#include <algorithm>
+
 #include "drivers/parsers/byte_order.h"
 
 namespace deepnav {
@@ -8,10 +10,13 @@ bool Pd0Framer::init(size_t max_ensemble_bytes) {
   if (max_ensemble_bytes < kMinEnsembleBytes || max_ensemble_bytes > 65535) return false;
   max_bytes_ = max_ensemble_bytes;
   pending_ = 0;
+  probe_ = 0;
+  end_of_input_ = false;
   return buffer_.init(max_ensemble_bytes + 2 + 4096);
 }
 
 void Pd0Framer::flushPending() {
+  if (pending_ > 0) probe_ = 0;
   buffer_.consume(pending_);
   pending_ = 0;
 }
@@ -19,7 +24,64 @@ void Pd0Framer::flushPending() {
 FrameStatus Pd0Framer::skip(size_t n, const char* reason, FrameError* error) {
   *error = {buffer_.offset(), n, reason};
   buffer_.consume(n);
+  probe_ = 0;
   return FrameStatus::kBad;
+}
+
+bool Pd0Framer::headerAt(size_t at) const {
+  const uint8_t* d = buffer_.data();
+  return at + 1 < buffer_.size() && d[at] == 0x7F && d[at + 1] == 0x7F;
+}
+
+Pd0Framer::Check Pd0Framer::checkAt(size_t at, size_t* frame_bytes, const char** reason) const {
+  const uint8_t* d = buffer_.data() + at;
+  const size_t avail = buffer_.size() - at;
+  if (avail < 6) return Check::kIncomplete;
+  const size_t length = readLe16(d + 2);
+  const size_t num_types = d[5];
+  if (length < kMinEnsembleBytes + 2 * num_types || length > max_bytes_) {
+    *reason = "PD0 ensemble length out of range";
+    return Check::kBad;
+  }
+  // The data type offsets, checked as the decoder checks them, before any checksum: a run of noise
+  // (0x7F 0x7F 0x7F...) then costs no checksum over a claimed length at every byte.
+  const size_t table_end = kMinEnsembleBytes + 2 * num_types;
+  if (avail < table_end) return Check::kIncomplete;
+  for (size_t i = 0; i < num_types; ++i) {
+    const size_t begin = readLe16(d + 6 + 2 * i);
+    const size_t end = i + 1 < num_types ? readLe16(d + 8 + 2 * i) : length;
+    if (begin < table_end || begin + 2 > end || end > length) {
+      *reason = "PD0 data type offsets out of range";
+      return Check::kBad;
+    }
+  }
+  *frame_bytes = length + 2;
+  if (avail < length + 2) return Check::kIncomplete;
+  uint32_t sum = 0;
+  for (size_t i = 0; i < length; ++i) sum += d[i];
+  if ((sum & 0xFFFF) != readLe16(d + length)) {
+    *reason = "PD0 checksum mismatch";
+    return Check::kBad;
+  }
+  return Check::kValid;
+}
+
+// Position of the first later ensemble that is complete, checksum-valid and followed by a header, or
+// 0. The probe stops at a later candidate still incomplete (it may be the first real ensemble) and
+// resumes there on the next call, so each held byte is examined once per first header: linear cost.
+size_t Pd0Framer::laterValidFrame() {
+  const size_t size = buffer_.size();
+  for (probe_ = std::max<size_t>(probe_, 1); probe_ + 1 < size; ++probe_) {
+    if (!headerAt(probe_)) continue;
+    size_t bytes = 0;
+    const char* why = "";
+    const Check c = checkAt(probe_, &bytes, &why);
+    if (c == Check::kIncomplete) return 0;
+    if (c == Check::kBad) continue;
+    if (probe_ + bytes + 2 > size) return 0;  // wait for the next header's two bytes
+    if (headerAt(probe_ + bytes)) return probe_;
+  }
+  return 0;
 }
 
 FrameStatus Pd0Framer::next(RawFrame* frame, FrameError* error) {
@@ -30,25 +92,25 @@ FrameStatus Pd0Framer::next(RawFrame* frame, FrameError* error) {
   while (start + 1 < size && !(d[start] == 0x7F && d[start + 1] == 0x7F)) ++start;
   if (start > 0) {
     // Keep a trailing 0x7F: it may be the first half of the next header.
-    const size_t drop = (start + 1 == size && d[start] == 0x7F) ? start : (start + 1 < size ? start : size);
+    const bool half_header = start + 1 == size && d[start] == 0x7F && !end_of_input_;
+    const size_t drop = half_header ? start : (start + 1 < size ? start : size);
     if (drop > 0) return skip(drop, "no PD0 header (0x7F7F)", error);
   }
-  if (size < 6) return FrameStatus::kNeedMore;
-  const size_t length = readLe16(d + 2);
-  const size_t num_types = d[5];
-  if (length < kMinEnsembleBytes + 2 * num_types || length > max_bytes_) {
-    return skip(1, "PD0 ensemble length out of range", error);
+  size_t bytes = 0;
+  const char* why = "";
+  switch (checkAt(0, &bytes, &why)) {
+    case Check::kBad: return skip(1, why, error);
+    case Check::kValid:
+      *frame = {buffer_.offset(), d, bytes};
+      pending_ = bytes;
+      return FrameStatus::kFrame;
+    case Check::kIncomplete: break;
   }
-  if (size < length + 2) {
-    if (buffer_.full()) return skip(1, "PD0 ensemble larger than the buffer", error);
-    return FrameStatus::kNeedMore;
-  }
-  uint32_t sum = 0;
-  for (size_t i = 0; i < length; ++i) sum += d[i];
-  if ((sum & 0xFFFF) != readLe16(d + length)) return skip(1, "PD0 checksum mismatch", error);
-  *frame = {buffer_.offset(), d, length + 2};
-  pending_ = length + 2;
-  return FrameStatus::kFrame;
+  if (size == 0) return FrameStatus::kNeedMore;
+  if (end_of_input_) return skip(size < 2 ? size : 1, "PD0 ensemble cut short by the end of the input", error);
+  if (buffer_.full()) return skip(1, "PD0 ensemble larger than the buffer", error);
+  if (const size_t at = laterValidFrame(); at > 0) return skip(at, "PD0 header whose length runs over a later valid ensemble", error);
+  return FrameStatus::kNeedMore;
 }
 
 }  // namespace deepnav

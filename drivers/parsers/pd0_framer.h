@@ -9,24 +9,38 @@ namespace deepnav {
 
 // Finds Teledyne RDI PD0 ensembles in a byte stream. An ensemble starts with the header ID 0x7F 0x7F,
 // bytes 2-3 hold its length N (little-endian, without the checksum), byte 5 the number of data types,
-// and the 16-bit sum of bytes [0, N) follows at N. A frame whose length is out of range or whose
-// checksum fails is reported and the search restarts one byte after its header, so a good ensemble
-// that a corrupted length had swallowed is still found.
+// the offsets of the data types follow (each inside the ensemble, increasing), and the 16-bit sum of
+// bytes [0, N) follows at N. A frame whose length or offsets are out of range or whose checksum fails
+// is reported and the search restarts one byte after its header, so a good ensemble that a corrupted
+// length had swallowed is still found. While an ensemble is incomplete, the bytes
+// already held are probed for a later complete, checksum-valid ensemble followed by a header: one is
+// taken as proof that the first header was false (a live line then does not wait for bytes that belong
+// to later ensembles). After endOfInput() an incomplete ensemble is dropped one byte at a time so the
+// ensembles inside it are found.
 class Pd0Framer {
  public:
   static constexpr size_t kMinEnsembleBytes = 6;
   // max_ensemble_bytes bounds the length field (and sizes the buffer).
   bool init(size_t max_ensemble_bytes);
   size_t push(const uint8_t* data, size_t n) { return flushPending(), buffer_.append(data, n); }
+  // No byte will follow (end of a file): what is held is framed without waiting.
+  void endOfInput() { end_of_input_ = true; }
   FrameStatus next(RawFrame* frame, FrameError* error);
 
  private:
+  enum class Check { kBad, kIncomplete, kValid };
+  // The candidate ensemble whose header starts `at` bytes into the buffer.
+  Check checkAt(size_t at, size_t* frame_bytes, const char** reason) const;
+  bool headerAt(size_t at) const;
+  size_t laterValidFrame();
   void flushPending();
   FrameStatus skip(size_t n, const char* reason, FrameError* error);
 
   StreamBuffer buffer_;
   size_t max_bytes_ = 0;
   size_t pending_ = 0;  // bytes of the last returned frame, consumed on the next call
+  size_t probe_ = 0;    // next buffer position the probe for a later ensemble examines (0: not started)
+  bool end_of_input_ = false;
 };
 
 }  // namespace deepnav

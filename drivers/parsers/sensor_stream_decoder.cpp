@@ -48,7 +48,7 @@ bool SensorStreamDecoder::init(SensorProtocol protocol, const PlausibilityLimits
       ensemble_ = std::make_unique<Pd0Ensemble>();
       return pd0_.init(8192);
     case SensorProtocol::kPd6: return lines_.init(":", 120);
-    case SensorProtocol::kWlA50: return lines_.init("w{", 4096, false);
+    case SensorProtocol::kWlA50: return lines_.init("w{", 4096, true, "{");
     case SensorProtocol::kNmea0183: return lines_.init("$!", 120);
     case SensorProtocol::kXsens: return xbus_.init(2048);
   }
@@ -127,7 +127,9 @@ void SensorStreamDecoder::onFrame(const RawFrame& f, TimeUs t_us, SampleSink* si
     case SensorProtocol::kWlA50: {
       WlDvlReport r;
       DvlSample s;
-      const WlDecode d = line[0] == '{' ? parseWlDvlJson(line, &r, &why) : parseWlDvlSerialLine(line, &r, &why);
+      size_t junk = 0;
+      const WlDecode d = parseWlDvlLine(line, &r, &why, &junk);
+      if (junk > 0) ++counters_.bad_frames, counters_.bytes_skipped += junk;
       ok = d != WlDecode::kInvalid;
       if (d == WlDecode::kDecoded && !plausibleFrame(plausible_.checkWaterLinked(r))) return;
       if (d == WlDecode::kDecoded && dvlSampleFromWlReport(r, t_us, &s)) deliver(sink->onDvl(s)), used = true;

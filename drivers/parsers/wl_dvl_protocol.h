@@ -1,4 +1,5 @@
 #pragma once
+#include <cstddef>
 #include <cstdint>
 #include <string_view>
 
@@ -25,5 +26,11 @@ bool wlMicros(double v, int64_t* out);
 
 // The same for one TCP JSON v3 report ("type": "velocity" or "position_local").
 WlDecode parseWlDvlJson(std::string_view text, WlDvlReport* out, const char** error);
+
+// One framed line of either protocol ('{': JSON report, else serial sentence). A line that does not
+// decode but holds a later "wr" is decoded again from there: junk glued before a sentence (a cut JSON
+// object, noise without a line end) does not cost the sentence. *junk_bytes is how many leading bytes
+// were dropped that way (0 otherwise).
+WlDecode parseWlDvlLine(std::string_view line, WlDvlReport* out, const char** error, size_t* junk_bytes);
 
 }  // namespace deepnav

@@ -1,5 +1,7 @@
 #include "drivers/parsers/xbus_framer.h"
 
+#include <algorithm>
+
 #include "drivers/parsers/byte_order.h"
 
 namespace deepnav {
@@ -14,10 +16,13 @@ bool XbusFramer::init(size_t max_payload_bytes) {
   if (max_payload_bytes == 0 || max_payload_bytes > 65535) return false;
   max_payload_ = max_payload_bytes;
   pending_ = 0;
+  probe_ = 0;
+  end_of_input_ = false;
   return buffer_.init(max_payload_bytes + 7 + 4096);
 }
 
 void XbusFramer::flushPending() {
+  if (pending_ > 0) probe_ = 0;
   buffer_.consume(pending_);
   pending_ = 0;
 }
@@ -25,7 +30,62 @@ void XbusFramer::flushPending() {
 FrameStatus XbusFramer::skip(size_t n, const char* reason, FrameError* error) {
   *error = {buffer_.offset(), n, reason};
   buffer_.consume(n);
+  probe_ = 0;
   return FrameStatus::kBad;
+}
+
+bool XbusFramer::headerAt(size_t at) const {
+  const uint8_t* d = buffer_.data();
+  return at + 1 < buffer_.size() && d[at] == kPreamble && d[at + 1] == kMasterBusId;
+}
+
+XbusFramer::Check XbusFramer::checkAt(size_t at, size_t* frame_bytes, const char** reason) const {
+  const uint8_t* d = buffer_.data() + at;
+  const size_t avail = buffer_.size() - at;
+  if (avail >= 2 && d[1] != kMasterBusId) {
+    *reason = "Xbus bus ID is not 0xFF";
+    return Check::kBad;
+  }
+  if (avail < 4) return Check::kIncomplete;
+  size_t header = 4;
+  size_t length = d[3];
+  if (length == 0xFF) {
+    if (avail < 6) return Check::kIncomplete;
+    length = readBe16(d + 4);
+    header = 6;
+  }
+  if (length > max_payload_) {
+    *reason = "Xbus length out of range";
+    return Check::kBad;
+  }
+  const size_t total = header + length + 1;
+  *frame_bytes = total;
+  if (avail < total) return Check::kIncomplete;
+  uint8_t sum = 0;
+  for (size_t i = 1; i < total; ++i) sum = uint8_t(sum + d[i]);
+  if (sum != 0) {
+    *reason = "Xbus checksum mismatch";
+    return Check::kBad;
+  }
+  return Check::kValid;
+}
+
+// Position of the first later message that is complete, checksum-valid and followed by a preamble and
+// bus ID, or 0. The probe stops at a later candidate still incomplete (it may be the first real
+// message) and resumes there on the next call: each held byte is examined once per first preamble.
+size_t XbusFramer::laterValidFrame() {
+  const size_t size = buffer_.size();
+  for (probe_ = std::max<size_t>(probe_, 1); probe_ + 1 < size; ++probe_) {
+    if (!headerAt(probe_)) continue;
+    size_t bytes = 0;
+    const char* why = "";
+    const Check c = checkAt(probe_, &bytes, &why);
+    if (c == Check::kIncomplete) return 0;
+    if (c == Check::kBad) continue;
+    if (probe_ + bytes + 2 > size) return 0;  // wait for the next preamble and bus ID
+    if (headerAt(probe_ + bytes)) return probe_;
+  }
+  return 0;
 }
 
 FrameStatus XbusFramer::next(RawFrame* frame, FrameError* error) {
@@ -35,24 +95,21 @@ FrameStatus XbusFramer::next(RawFrame* frame, FrameError* error) {
   size_t start = 0;
   while (start < size && d[start] != kPreamble) ++start;
   if (start > 0) return skip(start, "no Xbus preamble (0xFA)", error);
-  if (size < 4) return FrameStatus::kNeedMore;
-  if (d[1] != kMasterBusId) return skip(1, "Xbus bus ID is not 0xFF", error);
-  size_t header = 4;
-  size_t length = d[3];
-  if (length == 0xFF) {
-    if (size < 6) return FrameStatus::kNeedMore;
-    length = readBe16(d + 4);
-    header = 6;
+  if (size == 0) return FrameStatus::kNeedMore;
+  size_t bytes = 0;
+  const char* why = "";
+  switch (checkAt(0, &bytes, &why)) {
+    case Check::kBad: return skip(1, why, error);
+    case Check::kValid:
+      *frame = {buffer_.offset(), d, bytes};
+      pending_ = bytes;
+      return FrameStatus::kFrame;
+    case Check::kIncomplete: break;
   }
-  if (length > max_payload_) return skip(1, "Xbus length out of range", error);
-  const size_t total = header + length + 1;
-  if (size < total) return FrameStatus::kNeedMore;
-  uint8_t sum = 0;
-  for (size_t i = 1; i < total; ++i) sum = uint8_t(sum + d[i]);
-  if (sum != 0) return skip(1, "Xbus checksum mismatch", error);
-  *frame = {buffer_.offset(), d, total};
-  pending_ = total;
-  return FrameStatus::kFrame;
+  if (end_of_input_) return skip(1, "Xbus message cut short by the end of the input", error);
+  if (buffer_.full()) return skip(1, "Xbus message larger than the buffer", error);
+  if (const size_t at = laterValidFrame(); at > 0) return skip(at, "Xbus length runs over a later valid message", error);
+  return FrameStatus::kNeedMore;
 }
 
 bool splitXbusFrame(const uint8_t* d, size_t size, XbusMessage* m) {

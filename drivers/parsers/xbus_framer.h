@@ -10,20 +10,32 @@ namespace deepnav {
 // Finds Xsens Xbus messages in a byte stream: preamble 0xFA, bus ID (0xFF), message ID, length byte
 // (0xFF: a 2-byte big-endian extended length follows), payload, checksum such that the 8-bit sum of
 // every byte after the preamble is zero. Failed frames are reported and the search restarts one byte
-// after the preamble.
+// after the preamble. While a message is incomplete, the bytes already held are probed for a later
+// complete, checksum-valid message followed by a preamble and bus ID: one is taken as proof that the
+// first preamble was false (a live line then does not wait for bytes of later messages). After
+// endOfInput() an incomplete message is dropped one byte at a time so the messages inside it are found.
 class XbusFramer {
  public:
   bool init(size_t max_payload_bytes);
   size_t push(const uint8_t* data, size_t n) { return flushPending(), buffer_.append(data, n); }
+  // No byte will follow (end of a file): what is held is framed without waiting.
+  void endOfInput() { end_of_input_ = true; }
   FrameStatus next(RawFrame* frame, FrameError* error);
 
  private:
+  enum class Check { kBad, kIncomplete, kValid };
+  // The candidate message whose preamble is `at` bytes into the buffer.
+  Check checkAt(size_t at, size_t* frame_bytes, const char** reason) const;
+  bool headerAt(size_t at) const;
+  size_t laterValidFrame();
   void flushPending();
   FrameStatus skip(size_t n, const char* reason, FrameError* error);
 
   StreamBuffer buffer_;
   size_t max_payload_ = 0;
   size_t pending_ = 0;
+  size_t probe_ = 0;  // next buffer position the probe for a later message examines (0: not started)
+  bool end_of_input_ = false;
 };
 
 // A framed Xbus message split into its parts (the frame as returned by XbusFramer).

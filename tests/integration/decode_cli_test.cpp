@@ -3,6 +3,7 @@
 // their byte offset.
 #include <cstdio>
 #include <cstdlib>
+#include <iterator>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -118,6 +119,150 @@ TEST(DecodeCli, GeneratedCapturesWithBadFrames) {
   ASSERT_EQ(r.out.size(), 2u);
   EXPECT_EQ(YAML::Load(r.out[1])["packet_counter"].as<int>(), 2);
   EXPECT_NE(r.err.find("Xbus checksum mismatch"), std::string::npos) << r.err;
+}
+
+// Issue 21: frames after a false header, in a mix with damaged ones, after junk on the same line or a
+// stray byte; every intact one decoded, at its own offset.
+std::string bytesOf(const std::vector<uint8_t>& v) { return std::string(v.begin(), v.end()); }
+
+std::vector<long> offsets(const DecodeRun& r) {
+  std::vector<long> out;
+  for (const auto& line : r.out) out.push_back(YAML::Load(line)["offset"].as<long>());
+  return out;
+}
+
+std::string builtPd0(uint16_t ensemble) {
+  test::Pd0Spec s;
+  s.ensemble = ensemble;
+  return bytesOf(test::buildPd0(s));
+}
+
+std::string builtXbus(uint16_t counter) {
+  const float q[4] = {1, 0, 0, 0}, acc[3] = {0, 0, 9.81f}, gyr[3] = {0, 0, 0.5f};
+  return bytesOf(test::buildMtData2(counter, q, acc, gyr));
+}
+
+// frames[i] with every fifth damaged in turn: its length field, cut in half, replaced by a false
+// header; the intact frames' offsets are returned in *intact.
+std::string mixed(const std::vector<std::string>& frames, std::vector<long>* intact, const std::string& false_header) {
+  std::string out;
+  for (size_t i = 0; i < frames.size(); ++i) {
+    std::string f = frames[i];
+    if (i % 5 == 2) {
+      if ((i / 5) % 3 == 0) f[3] = char(0xF0);
+      if ((i / 5) % 3 == 1) f.resize(f.size() / 2);
+      if ((i / 5) % 3 == 2) f = false_header;
+    } else {
+      intact->push_back(long(out.size()));
+    }
+    out += f;
+  }
+  return out;
+}
+
+TEST(DecodeCli, Pd0FalseHeaderAndMixedEnsemblesLoseNothing) {
+  std::vector<std::string> frames;
+  for (uint16_t i = 1; i <= 107; ++i) frames.push_back(builtPd0(i));
+  std::string file = "\x7f\x7f\xff\xff";
+  for (const auto& f : frames) file += f;
+  DecodeRun r = decode("pd0", writeTemp("false.pd0", file));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out.size(), 107u);
+  EXPECT_NE(r.err.find("byte 0: PD0"), std::string::npos) << r.err;  // the 4 bytes are reported
+  EXPECT_NE(r.err.find(": 107 messages, "), std::string::npos) << r.err;
+  std::vector<long> intact;
+  r = decode("pd0", writeTemp("mixed.pd0", mixed(frames, &intact, std::string("\x7f\x7f\x00\xf0\x01\x02", 6))));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(intact.size(), 86u);
+  EXPECT_EQ(offsets(r), intact) << r.err;
+}
+
+TEST(DecodeCli, Pd0RealCaptureBehindAFalseHeader) {
+  if (shared().empty() || !std::filesystem::exists(shared() / "dvl")) GTEST_SKIP() << "DEEPNAV_SHARED_DATA not set";
+  std::ifstream in(shared() / "dvl" / "LA100204.PD0", std::ios::binary);
+  const std::string capture{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  DecodeRun r = decode("pd0", writeTemp("real_false.pd0", "\x7f\x7f\xff\xff" + capture));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out.size(), 107u);
+  EXPECT_NE(r.err.find("byte 0: PD0"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(": 107 messages, "), std::string::npos) << r.err;
+  std::vector<std::string> frames;
+  for (size_t at = 0; at + 4 <= capture.size();) {
+    const size_t n = size_t(uint8_t(capture[at + 2]) | (uint8_t(capture[at + 3]) << 8)) + 2;
+    frames.push_back(capture.substr(at, n));
+    at += n;
+  }
+  ASSERT_EQ(frames.size(), 107u);
+  std::vector<long> intact;
+  r = decode("pd0", writeTemp("real_mixed.pd0", mixed(frames, &intact, std::string("\x7f\x7f\x00\xf0\x01\x02", 6))));
+  EXPECT_EQ(intact.size(), 86u);
+  EXPECT_EQ(offsets(r), intact) << r.err;
+}
+
+TEST(DecodeCli, XsensFalseLengthAndMixedMessagesLoseNothing) {
+  std::vector<std::string> frames;
+  for (uint16_t i = 1; i <= 50; ++i) frames.push_back(builtXbus(i));
+  std::string file = "\xfa\xff\x36\xff\xf0\x00";
+  for (const auto& f : frames) file += f;
+  DecodeRun r = decode("xsens", writeTemp("false.xs", file));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out.size(), 50u) << r.err;
+  std::vector<long> intact;
+  r = decode("xsens", writeTemp("mixed.xs", mixed(frames, &intact, "\xfa\xff\x36\xfe")));
+  EXPECT_EQ(offsets(r), intact) << r.err;
+}
+
+TEST(DecodeCli, WaterLinkedAfterJunkAndBareCr) {
+  const std::string wrz = test::wlSentence("wrz,0.100,0.200,0.010,y,1.90,0.002,1e-06;0;0;0;1e-06;0;0;0;1e-06,1000,1040,250.0,0");
+  const std::string cr = wrz.substr(0, wrz.size() - 1);
+  const std::string file = "hello world " + wrz + cr + cr + "{\"cut\": " + wrz + std::string("\x00\xff", 2) + wrz + "ww" + wrz;
+  const DecodeRun r = decode("wl-a50", writeTemp("junk.wl", file));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out.size(), 6u) << r.err;
+}
+
+TEST(DecodeCli, CandumpLinesAfterStrayBytes) {
+  const std::string line = "(1436509052.249713) can0 09F1128F#FF4C2EFF7FFFFF7F\n";  // 127250 from source 143
+  std::string file;
+  for (const std::string& junk : {std::string(), std::string("\xff"), std::string("\x80\x81"), std::string("x"),
+                                  std::string(1, '\0'), std::string("\r")}) {
+    file += junk + line;
+  }
+  const DecodeRun r = decode("n2k-candump", writeTemp("junk.can", file));
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out.size(), 6u) << r.err;
+}
+
+TEST(DecodeCli, RealCandumpWithAStrayByteBeforeEveryThirdLine) {
+  if (shared().empty() || !std::filesystem::exists(shared() / "can")) GTEST_SKIP() << "DEEPNAV_SHARED_DATA not set";
+  std::ifstream in(shared() / "can" / "candumpSample2.txt");
+  std::string file;
+  int n = 0;
+  for (std::string line; std::getline(in, line); ++n) file += (n % 3 == 1 ? "\xe9" : n % 3 == 2 ? "\r" : "") + line + "\n";
+  const DecodeRun r = decode("n2k-candump", writeTemp("stray.can", file));
+  ASSERT_EQ(r.status, 0) << r.err;
+  int heading = 0;
+  for (const auto& l : r.out) heading += YAML::Load(l)["pgn"].as<int>() == 127250;
+  EXPECT_EQ(heading, 46) << r.err;
+}
+
+// A run of start characters (each one a frame cut short) gives a bounded stderr: the first bad frames
+// one line each, then one line per byte range, and the exact count in the summary.
+TEST(DecodeCli, TenMegabytesOfNoiseGiveABoundedReport) {
+  const std::string path = ::testing::TempDir() + std::to_string(::getpid()) + "_noise";
+  for (const auto& [format, byte] : {std::pair{"nmea0183", '$'}, {"pd6", ':'}, {"pd0", '\x7f'}, {"xsens", '\xfa'}}) {
+    std::ofstream(path, std::ios::binary) << std::string(10 << 20, byte);
+    const DecodeRun r = decode(format, path);
+    ASSERT_EQ(r.status, 0);
+    EXPECT_LT(r.err.size(), 64u << 10) << format;
+    EXPECT_TRUE(r.out.empty());
+    EXPECT_NE(r.err.find("0 messages, "), std::string::npos) << format;
+    EXPECT_NE(r.err.find("bad frames ("), std::string::npos) << format;  // the per-range lines
+    if (byte == '$') {
+      EXPECT_NE(r.err.find("0 messages, 10485760 bad frames skipped"), std::string::npos) << r.err.substr(r.err.size() - 300);
+    }
+  }
+  std::filesystem::remove(path);
 }
 
 }  // namespace
