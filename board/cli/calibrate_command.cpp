@@ -13,6 +13,7 @@
 #include "board/config/param_table.h"
 #include "board/config/stereo_calibration_file.h"
 #include "board/config/text_file.h"
+#include "board/config/yaml_document.h"
 #include "drivers/replay/recording_reader.h"
 #include "vision/calib/stereo_charuco_calibration.h"
 
@@ -194,12 +195,7 @@ bool loadCharucoTarget(const std::string& path, CharucoTarget* target, std::stri
   std::string text;
   if (!readTextFile(path, "the calibration target", &text, error)) return false;
   YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::Exception& e) {
-    *error = path + ": not valid YAML (line " + std::to_string(e.mark.line + 1) + "): " + e.msg;
-    return false;
-  }
+  if (!parseYamlDocument(text, path, &root, error)) return false;
   if (!root.IsMap()) {
     *error = path + ": expected a map of keys (squares_x, squares_y, square_m, marker_m, dictionary, ...)";
     return false;

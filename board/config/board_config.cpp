@@ -1,7 +1,8 @@
 #include "board/config/board_config.h"
 
+#include "board/config/dense_stereo_range.h"
 #include "board/config/text_file.h"
-
+#include "board/config/yaml_document.h"
 
 #include <yaml-cpp/yaml.h>
 
@@ -438,6 +439,31 @@ const std::array kBoardParams = {
 
 #undef DEEPNAV_FIELD
 
+// The dense stereo runs on the camera images reduced by vision.dense_scale_down (vision/cloud/stereo_cloud.cpp
+// refuses a size the factor does not divide); its disparity range must stay below the reduced width
+// (board/config/dense_stereo_range.h: OpenCV's SGBM throws there).
+bool checkDenseStereoSize(const BoardConfig& c, const std::string& name, std::string* error) {
+  const int s = c.vision.dense_scale_down;
+  if (c.camera.width_px % s != 0 || c.camera.height_px % s != 0) {
+    if (error) {
+      *error = name + ": keys 'camera.width_px' and 'camera.height_px' (" + std::to_string(c.camera.width_px) + "x" +
+               std::to_string(c.camera.height_px) + ") must be multiples of 'vision.dense_scale_down' (" +
+               std::to_string(s) + ")";
+    }
+    return false;
+  }
+  std::string why;
+  if (!denseStereoRangeFits(c.vision.dense_method, c.camera.width_px / s, c.vision.dense_disparities, &why)) {
+    if (error) {
+      *error = name + ": key 'vision.dense_disparities' (" + std::to_string(c.vision.dense_disparities) +
+               ") does not fit 'camera.width_px' (" + std::to_string(c.camera.width_px) + " px, matched at 1/" +
+               std::to_string(s) + " by 'vision.dense_scale_down'): " + why;
+    }
+    return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 BoardConfig defaultBoardConfig() {
@@ -457,19 +483,14 @@ bool loadBoardConfigText(const std::string& text, const std::string& name, Board
                          std::string* error) {
   *config = defaultBoardConfig();
   YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::Exception& e) {
-    if (error) *error = name + ": not valid YAML (line " + std::to_string(e.mark.line + 1) + "): " + e.msg;
-    return false;
-  }
+  if (!parseYamlDocument(text, name, &root, error)) return false;
   if (!applyParams(bindParams(kBoardParams, *config), root, name, error)) return false;
   std::string ekf_error;
   if (!validateEkfConfig(config->ekf, &ekf_error)) {
     if (error) *error = name + ": " + ekf_error;
     return false;
   }
-  return true;
+  return checkDenseStereoSize(*config, name, error);
 }
 
 bool loadBoardConfig(const std::string& path, BoardConfig* config, std::string* error) {

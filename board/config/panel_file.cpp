@@ -1,6 +1,7 @@
 #include "board/config/panel_file.h"
 
 #include "board/config/text_file.h"
+#include "board/config/yaml_document.h"
 
 #include <cmath>
 #include <fstream>
@@ -97,12 +98,7 @@ bool readMarker(const YAML::Node& n, const std::string& key, int faces, PanelMar
 bool parsePanelDescription(const std::string& text, const std::string& name, PanelDescription* out, std::string* error) {
   Ctx c{name, error};
   YAML::Node root;
-  try {
-    root = YAML::Load(text);
-  } catch (const YAML::Exception& e) {
-    if (error) *error = name + ": not valid YAML (line " + std::to_string(e.mark.line + 1) + "): " + e.msg;
-    return false;
-  }
+  if (!parseYamlDocument(text, name, &root, error)) return false;
   if (!checkKeys(root, "", {"dictionary", "marker_size_m", "corner_radius_m", "faces", "markers"}, c)) return false;
   PanelDescription p;
   if (!root["dictionary"] || !root["dictionary"].IsScalar()) return c.fail("dictionary", "is missing");

@@ -124,6 +124,17 @@ bool findUnknownKey(const YAML::Node& node, const std::string& prefix, const std
                     const std::set<std::string>& sections, const std::string& file, std::string* error) {
   for (const auto& kv : node) {
     const std::string key = prefix.empty() ? kv.first.Scalar() : prefix + "." + kv.first.Scalar();
+    // `loop.rate_hz: 5` names a declared key but lookup() only walks nested maps: it would never apply.
+    if (kv.first.Scalar().find('.') != std::string::npos) {
+      if (error) {
+        const std::string& written = kv.first.Scalar();
+        const std::size_t dot = written.find('.');
+        *error = file + ": key '" + written + "' (line " + std::to_string(kv.first.Mark().line + 1) +
+                 ") is written with a dot; nest it instead: '" + written.substr(0, dot) + ":' then '  " +
+                 written.substr(dot + 1) + ": ...'";
+      }
+      return false;
+    }
     if (keys.count(key)) continue;
     if (sections.count(key) && kv.second.IsMap()) {
       if (!findUnknownKey(kv.second, key, keys, sections, file, error)) return false;

@@ -2,6 +2,9 @@
 
 #include <opencv2/core/persistence.hpp>
 
+#include "board/config/text_file.h"
+#include "board/config/yaml_document.h"
+
 namespace deepnav {
 namespace {
 
@@ -103,21 +106,18 @@ std::string stereoCalibrationText(const StereoCalibration& c, const StereoCalibr
 }
 
 bool readStereoCalibrationFile(const std::string& path, StereoCalibration* c, std::string* error) {
-  cv::FileStorage fs;
-  try {
-    if (!fs.open(path, cv::FileStorage::READ)) {
-      if (error) *error = path + ": cannot open the stereo calibration file";
-      return false;
-    }
-  } catch (const cv::Exception& e) {
-    if (error) *error = path + ": not an OpenCV YAML calibration file (" + e.err + ")";
-    return false;
-  }
-  return readFields(fs, path, c, error);
+  std::string text;
+  return readTextFile(path, "the stereo calibration file", &text, error) &&
+         parseStereoCalibrationText(text, path, c, error);
 }
 
 bool parseStereoCalibrationText(const std::string& text, const std::string& name, StereoCalibration* c,
                                 std::string* error) {
+  // OpenCV keeps the first of two equal keys without a word; its "%YAML:1.0" directive is not YAML 1.2.
+  const std::size_t directive = text.rfind("%YAML:", 0) == 0 ? text.find('\n') : 0;
+  if (!checkYamlKeysUnique(text.substr(directive == std::string::npos ? text.size() : directive), name, error)) {
+    return false;
+  }
   cv::FileStorage fs;
   try {
     if (text.empty() || !fs.open(text, cv::FileStorage::READ | cv::FileStorage::MEMORY | cv::FileStorage::FORMAT_YAML)) {

@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <vector>
 
+#include "board/config/sensor_driver_configs.h"
+#include "board/service/startup_checks.h"
 #include "drivers/camera/gvcp_probe.h"
 #include "drivers/outputs/udp_sender.h"
 #include "drivers/probe/device_probe.h"
@@ -28,6 +30,11 @@ class Checker {
   Checker(const std::string& board_path, std::string* error) : board_(board_path), error_(error) {}
   bool fail(const std::string& key, const std::string& what) {
     if (error_) *error_ = board_ + ": " + key + ": " + what;
+    return false;
+  }
+  // A message that already starts with its key ("can.imu_mapping: ...").
+  bool fail(const std::string& keyed_message) {
+    if (error_) *error_ = board_ + ": " + keyed_message;
     return false;
   }
 
@@ -71,8 +78,15 @@ bool checkCameras(const CameraSourceConfig& c, Checker& check, bool* any) {
 
 bool checkDevices(const BoardConfig& c, Checker& check, bool* any) {
   *any = false;
-  if (!checkCameras(c.camera.source, check, any)) return false;
   const BoardConfig::Sources& s = c.sources;
+  // The drivers' settings run derives before opening them (e.g. can.imu_mapping), checked before the
+  // devices are probed: the message names the key.
+  SensorThreadsConfig drivers;
+  std::string why;
+  const bool sensors = !s.dvl_serial.empty() || !s.ahrs_serial.empty() || !s.depth_serial.empty() ||
+                       !s.can_interface.empty();
+  if (sensors && !sensorThreadsConfig(c, &drivers, &why)) return check.fail(why);
+  if (!checkCameras(c.camera.source, check, any)) return false;
   const Device devices[] = {
       {"sources.dvl_serial", "DVL serial port", &s.dvl_serial, Device::kSerial},
       {"sources.ahrs_serial", "AHRS serial port", &s.ahrs_serial, Device::kSerial},
@@ -85,6 +99,9 @@ bool checkDevices(const BoardConfig& c, Checker& check, bool* any) {
     std::string reason;
     const bool ok = d.kind == Device::kSerial ? probeSerialPort(*d.value, &reason) : probeCanInterface(*d.value, &reason);
     if (!ok) return check.fail(d.key, std::string(d.what) + " " + *d.value + " is not reachable: " + reason);
+    if (d.kind == Device::kCan && !canInterfaceUsable(*d.value, &reason)) {
+      return check.fail(d.key, std::string(d.what) + " " + *d.value + " cannot be used: " + reason);
+    }
   }
   return true;
 }
@@ -124,11 +141,55 @@ bool checkCalibration(const BoardConfig::Camera& c, Checker& check) {
   return true;
 }
 
-bool checkOutputsAndRealtime(const BoardConfig& c, ValidatedBoard* out, Checker& check) {
+// The Modbus TCP server run starts: the address is one of this host's and the port is free.
+bool checkModbusServer(const BoardConfig::Outputs& o, Checker& check) {
+  if (!o.modbus_enabled) return true;
   in_addr a{};
-  if (c.outputs.modbus_enabled && ::inet_pton(AF_INET, c.outputs.modbus_address.c_str(), &a) != 1) {
-    return check.fail("outputs.modbus_address", "'" + c.outputs.modbus_address + "' is not an IPv4 address");
+  if (::inet_pton(AF_INET, o.modbus_address.c_str(), &a) != 1) {
+    return check.fail("outputs.modbus_address", "'" + o.modbus_address + "' is not an IPv4 address");
   }
+  std::string why;
+  bool foreign = false;
+  if (tcpListenable(o.modbus_address, o.modbus_port, &why, &foreign)) return true;
+  return check.fail(foreign ? "outputs.modbus_address" : "outputs.modbus_port",
+                    "Modbus TCP server on " + o.modbus_address + ":" + std::to_string(o.modbus_port) + ": " + why);
+}
+
+// The directories run creates and writes (recording, workspace state); relative paths are taken from the
+// working directory, as run does.
+bool checkServiceDirectories(const BoardConfig::Service& s, Checker& check) {
+  std::string why;
+  if (!s.recording_dir.empty() && !directoryUsable(s.recording_dir, &why)) {
+    return check.fail("service.recording_dir", why);
+  }
+  if (!s.state_dir.empty() && !directoryUsable(s.state_dir, &why)) return check.fail("service.state_dir", why);
+  return true;
+}
+
+// The loop's task table (board/loop/live_loop.cpp): the vision task runs at camera.rate_hz rounded to whole
+// hertz, and the scheduler refuses a task of 0 Hz.
+bool checkLoopRates(const BoardConfig& c, Checker& check) {
+  if (static_cast<int>(c.camera.rate_hz + 0.5) < 1) {
+    return check.fail("camera.rate_hz", std::to_string(c.camera.rate_hz) +
+                                            " Hz: the vision task runs at the rate rounded to whole hertz, here 0; "
+                                            "at least 0.5 Hz is needed");
+  }
+  return true;
+}
+
+bool checkRealtimeRights(const BoardConfig::Realtime& r, const ValidatedBoard& out, Checker& check) {
+  std::string why;
+  if (out.has_process_cpus && !cpusAvailable(out.process_cpus, &why)) return check.fail("realtime.process_cpus", why);
+  if (out.has_loop_cpus && !cpusAvailable(out.loop_cpus, &why)) return check.fail("realtime.loop_cpus", why);
+  if (r.loop_priority > 0 && !fifoPriorityAllowed(r.loop_priority, &why)) {
+    return check.fail("realtime.loop_priority", why);
+  }
+  if (r.mlockall && !memoryLockable(&why)) return check.fail("realtime.mlockall", why);
+  return true;
+}
+
+bool checkOutputsAndRealtime(const BoardConfig& c, ValidatedBoard* out, Checker& check) {
+  if (!checkModbusServer(c.outputs, check)) return false;
   std::vector<sockaddr_in> destinations;
   std::string why;
   if (!UdpSender::parseDestinations(c.outputs.udp_destinations, &destinations, &why)) {
@@ -142,7 +203,7 @@ bool checkOutputsAndRealtime(const BoardConfig& c, ValidatedBoard* out, Checker&
   if (out->has_process_cpus && !parseCpuList(c.realtime.process_cpus, &out->process_cpus, &why)) {
     return check.fail("realtime.process_cpus", why);
   }
-  return true;
+  return checkRealtimeRights(c.realtime, *out, check);
 }
 
 }  // namespace
@@ -168,7 +229,8 @@ bool validateBoard(const VehicleSetup& setup, const std::string& board_path, con
   }
   if (!replay.empty() && !checkReplay(setup, replay, key, check)) return false;
   out->replay_path = replay;
-  return checkOutputsAndRealtime(c, out, check);
+  return checkLoopRates(c, check) && checkServiceDirectories(c.service, check) &&
+         checkOutputsAndRealtime(c, out, check);
 }
 
 }  // namespace deepnav

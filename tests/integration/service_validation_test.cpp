@@ -6,6 +6,9 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <thread>
 
 #include <gtest/gtest.h>
@@ -122,6 +125,72 @@ TEST(ServiceValidation, ReachableDevicesPass) {
   // THEN it is valid
   EXPECT_EQ(o.code, 0) << o.err;
   if (camera <= 0) GTEST_SKIP() << "arv-fake-gv-camera-0.8 not installed: the GigE probe was not exercised";
+}
+
+// Issue 21: `run --validate` performs every start-up check `run` performs short of opening the devices, so
+// a board it calls valid is one run starts with. Each case used to validate and then be refused by run (or,
+// for the dense range, abort it in OpenCV); now both refuse it with the same message.
+TEST(ServiceValidation, ValidateRefusesWhatRunRefuses) {
+  const std::string dive = testing::makeTestDive("validate_like_run_dive", 2.0, 7, false);
+  const std::string a_file = testing::tempPath("not_a_directory");
+  std::ofstream(a_file) << "x";
+  const struct {
+    std::map<std::string, std::string> settings;
+    std::string expected;
+  } cases[] = {
+      {{{"outputs.modbus_enabled", "true"}, {"outputs.modbus_address", "192.0.2.7"}},
+       "outputs.modbus_address: Modbus TCP server on 192.0.2.7:1502: cannot listen: Cannot assign requested address "
+       "(not an address of this host)"},
+      {{{"service.recording_dir", a_file}}, "service.recording_dir: " + a_file + " exists and is not a directory"},
+      {{{"service.recording_dir", a_file + "/run"}},
+       "service.recording_dir: " + a_file + "/run cannot be created: " + a_file + " is not a directory"},
+      {{{"service.state_dir", a_file}}, "service.state_dir: " + a_file + " exists and is not a directory"},
+      {{{"sources.replay_path", "''"}, {"sources.can_interface", "lo"}},
+       "sources.can_interface: CAN interface lo cannot be used: is not a CAN interface (link type 772, loopback"},
+      {{{"sources.replay_path", "''"}, {"sources.can_interface", "lo"}, {"can.imu_mapping", "'garbage;;;'"}},
+       "can.imu_mapping entry 1 'garbage': identifier is not hex"},
+      {{{"camera.rate_hz", "0.3"}}, "camera.rate_hz: 0.300000 Hz: the vision task runs at the rate rounded to whole "
+                                    "hertz, here 0"},
+      {{{"camera.width_px", "512"}, {"camera.height_px", "384"}, {"camera.cx_px", "255.5"}, {"camera.cy_px", "191.5"},
+        {"vision.dense_method", "sgbm"}, {"vision.dense_disparities", "256"}},
+       "key 'vision.dense_disparities' (256) does not fit 'camera.width_px' (512 px"},
+  };
+  for (const auto& c : cases) {
+    const std::string board = testing::makeServiceBoard("validate_like_run", dive, c.settings);
+    for (const bool validate_only : {true, false}) {
+      std::vector<std::string> args = {"run", "--board", board};
+      args.push_back(validate_only ? "--validate" : "--no-record");
+      const Outcome o = runDeepnav(args);
+      EXPECT_EQ(o.code, 2) << (validate_only ? "--validate: " : "run: ") << c.expected << "\n" << o.err;
+      EXPECT_TRUE(has(o.err, board + ": " + c.expected)) << "expected: " << c.expected << "\ngot: " << o.err;
+    }
+  }
+  std::remove(a_file.c_str());
+}
+
+// Issue 21: the board file itself: a directory, an endless device, a repeated section are refused by name.
+TEST(ServiceValidation, BoardFileThatYamlAcceptsSilentlyIsRefused) {
+  const std::string dive = testing::makeTestDive("validate_board_file_dive", 2.0, 7, false);
+  const std::string board = testing::makeServiceBoard("repeated_section", dive);
+  std::ofstream(board, std::ios::app) << "loop:\n  rate_hz: 50\n";
+  const std::string dir = testing::tempPath("board_dir");
+  std::filesystem::create_directories(dir);
+  const struct {
+    std::string path, expected;
+  } cases[] = {
+      {board, board + ": line "},
+      {dir, dir + ": is a directory, not the board file"},
+      {"/dev/zero", "/dev/zero: the board file is larger than 4 MiB"},
+  };
+  for (const auto& c : cases) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const Outcome o = runDeepnav({"run", "--board", c.path, "--validate"});
+    EXPECT_EQ(o.code, 2) << o.err;
+    EXPECT_TRUE(has(o.err, c.expected)) << "expected: " << c.expected << "\ngot: " << o.err;
+    EXPECT_LT(testing::secondsSince(t0), 10.0) << c.path;
+  }
+  const Outcome o = runDeepnav({"run", "--board", board, "--validate"});
+  EXPECT_TRUE(has(o.err, "key 'loop' repeats the one of line")) << o.err;
 }
 
 TEST(ServiceLive, ADvlOnASerialLineFeedsTheLiveLoop) {

@@ -144,5 +144,100 @@ TEST(BoardConfig, MarkersEnabledKeySwitchesTheWholeMarkerChain) {
   EXPECT_NE(describeBoardParams().find("`markers.enabled` | bool | - | `true` | true or false"), std::string::npos);
 }
 
+// Issue 21: what yaml-cpp accepts silently is refused, naming the file, the key and the line.
+TEST(BoardConfig, RepeatedKeysSectionsDottedKeysAndSecondDocumentsAreRefused) {
+  const BadCase cases[] = {
+      // The first one used to win: refused in one order, accepted in the other.
+      {"loop:\n  rate_hz: 5\n  rate_hz: 100\n", "line 3: key 'loop.rate_hz' repeats the one of line 2"},
+      {"loop:\n  rate_hz: 100\n  rate_hz: 5\n", "line 3: key 'loop.rate_hz' repeats the one of line 2"},
+      {"loop: {rate_hz: 100, rate_hz: 200}\n", "key 'loop.rate_hz' repeats the one of line 1"},
+      // The second section used to be ignored.
+      {"loop:\n  rate_hz: 100\ncamera:\n  rate_hz: 5\nloop:\n  budget_us: 3000\n",
+       "line 5: key 'loop' repeats the one of line 1"},
+      // Passed the unknown-key check and was never applied.
+      {"loop.rate_hz: 5\n", "key 'loop.rate_hz' (line 1) is written with a dot; nest it instead"},
+      {"loop:\n  rate_hz: 100\nrecording:\n  chunk.size_kib: 64\n", "key 'chunk.size_kib' (line 4) is written with a dot"},
+      // Everything after the separator used to be ignored.
+      {"loop:\n  rate_hz: 100\n---\nloop:\n  rate_hz: 5\n", "holds more than one YAML document"},
+  };
+  for (const auto& c : cases) {
+    const std::string path = writeTemp("bad_structure.yaml", c.yaml);
+    BoardConfig config{};
+    std::string error;
+    EXPECT_FALSE(loadBoardConfig(path, &config, &error)) << c.yaml;
+    EXPECT_EQ(error.rfind(path + ": ", 0), 0u) << error;
+    EXPECT_NE(error.find(c.must_mention), std::string::npos) << "got: " << error;
+  }
+}
+
+TEST(BoardConfig, DocumentMarkersAndEqualKeysInOtherMapsStayValid) {
+  const char* good[] = {
+      "---\nloop:\n  rate_hz: 200\n",
+      "loop:\n  rate_hz: 200\n...\n",
+      // The same key name in two sections is two keys.
+      "loop:\n  rate_hz: 200\ncamera:\n  rate_hz: 5\n",
+  };
+  for (const char* yaml : good) {
+    BoardConfig c{};
+    std::string error;
+    EXPECT_TRUE(loadBoardConfig(writeTemp("good_structure.yaml", yaml), &c, &error)) << yaml << error;
+    EXPECT_EQ(c.loop.rate_hz, 200) << yaml;
+  }
+}
+
+TEST(BoardConfig, DirectoryIsRefused) {
+  BoardConfig c{};
+  std::string error;
+  const std::string dir = ::testing::TempDir();
+  EXPECT_FALSE(loadBoardConfig(dir, &c, &error));
+  EXPECT_EQ(error, dir + ": is a directory, not the board file");
+}
+
+TEST(BoardConfig, EndlessOrHugeInputIsRefusedAtTheLimit) {
+  BoardConfig c{};
+  std::string error;
+  EXPECT_FALSE(loadBoardConfig("/dev/zero", &c, &error));
+  EXPECT_EQ(error.rfind("/dev/zero: the board file is larger than 4 MiB", 0), 0u) << error;
+  // A regular file one byte over the limit (a comment, so that only the size is wrong).
+  const std::string path = ::testing::TempDir() + "huge_board.yaml";
+  {
+    std::ofstream out(path);
+    out << "#" << std::string(4 * 1024 * 1024, 'x');
+  }
+  EXPECT_FALSE(loadBoardConfig(path, &c, &error));
+  EXPECT_NE(error.find(path + ": the board file is larger than 4 MiB"), std::string::npos) << error;
+  std::remove(path.c_str());
+}
+
+// OpenCV's SGBM throws when the searched range (rounded up to 16) reaches the matched width
+// (board/config/dense_stereo_range.h): 512 px at scale 1/2 is 256 px wide.
+TEST(BoardConfig, DenseDisparityRangeMustFitTheImageWidth) {
+  const std::string camera = "camera:\n  width_px: 512\n  height_px: 384\n  cx_px: 255.5\n  cy_px: 191.5\n";
+  const struct {
+    const char* vision;
+    bool valid;
+  } cases[] = {
+      {"vision:\n  dense_method: sgbm\n  dense_disparities: 256\n", false},
+      {"vision:\n  dense_method: sgbm-wls\n  dense_disparities: 241\n", false},  // searched as 256
+      {"vision:\n  dense_method: sgbm\n  dense_disparities: 240\n", true},
+      {"vision:\n  dense_method: elas\n  dense_disparities: 256\n", false},
+      {"vision:\n  dense_method: elas\n  dense_disparities: 255\n", true},
+      {"vision:\n  dense_method: sgbm\n  dense_disparities: 256\n  dense_scale_down: 1\n", true},
+  };
+  for (const auto& k : cases) {
+    BoardConfig c{};
+    std::string error;
+    const std::string yaml = camera + k.vision;
+    EXPECT_EQ(loadBoardConfig(writeTemp("dense.yaml", yaml), &c, &error), k.valid) << yaml << error;
+    if (k.valid) continue;
+    EXPECT_NE(error.find("key 'vision.dense_disparities'"), std::string::npos) << error;
+    EXPECT_NE(error.find("'camera.width_px' (512 px"), std::string::npos) << error;
+  }
+  BoardConfig c{};
+  std::string error;
+  EXPECT_FALSE(loadBoardConfig(writeTemp("odd.yaml", "camera:\n  width_px: 511\n  cx_px: 255\n"), &c, &error));
+  EXPECT_NE(error.find("must be multiples of 'vision.dense_scale_down' (2)"), std::string::npos) << error;
+}
+
 }  // namespace
 }  // namespace deepnav

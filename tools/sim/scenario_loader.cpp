@@ -10,6 +10,8 @@
 #include "tools/sim/sensors/imu_grades.h"
 #include "tools/sim/trajectory.h"
 #include "tools/sim/yaml_section.h"
+#include "board/config/text_file.h"
+#include "board/config/yaml_document.h"
 
 namespace deepnav::sim {
 
@@ -428,6 +430,8 @@ bool parseScenario(const std::string& yaml_text, const std::string& source_name,
     if (error) *error = source_name + ": YAML syntax error: " + e.what();
     return false;
   }
+  // Repeated keys and a second document, which YAML::Load accepts silently.
+  if (!parseYamlDocument(yaml_text, source_name, &root, error)) return false;
   Scenario s;
   s.name = std::filesystem::path(source_name).stem().string();
   YamlSection top(root, "", &errors);
@@ -457,14 +461,8 @@ bool parseScenario(const std::string& yaml_text, const std::string& source_name,
 }
 
 bool loadScenario(const std::string& path, Scenario* out, std::string* error) {
-  std::ifstream file(path);
-  if (!file) {
-    if (error) *error = path + ": cannot open the scenario file";
-    return false;
-  }
-  std::ostringstream text;
-  text << file.rdbuf();
-  return parseScenario(text.str(), path, out, error);
+  std::string text;
+  return readTextFile(path, "the scenario file", &text, error) && parseScenario(text, path, out, error);
 }
 
 }  // namespace deepnav::sim
