@@ -4,7 +4,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake ninja-build pkg-config git
+  build-essential cmake ninja-build pkg-config git ccache
   libeigen3-dev libopencv-dev libopencv-contrib-dev liboctomap-dev
   libaravis-dev aravis-tools aravis-tools-cli libusb-1.0-0-dev
   libmodbus-dev libsystemd-dev libyaml-cpp-dev libcli11-dev libspdlog-dev libfmt-dev
