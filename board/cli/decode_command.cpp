@@ -171,6 +171,7 @@ void forEachLine(std::ifstream& in, size_t max_bytes, Reporter* rep,
 void decodePd0(std::ifstream& in, Reporter* rep) {
   Pd0Framer framer;
   framer.init(65535);
+  framer.waitForCertainty();  // a file: waiting for bytes costs no latency
   auto e = std::make_unique<Pd0Ensemble>();
   pump(in, &framer, rep, [&](const RawFrame& f) {
     const char* why = "";
@@ -185,6 +186,7 @@ void decodePd0(std::ifstream& in, Reporter* rep) {
 void decodeXsens(std::ifstream& in, Reporter* rep) {
   XbusFramer framer;
   framer.init(65535);
+  framer.waitForCertainty();  // a file: waiting for bytes costs no latency
   pump(in, &framer, rep, [&](const RawFrame& f) {
     XbusMessage m;
     if (!splitXbusFrame(f.data, f.size, &m)) return rep->bad(f.offset, "Xbus frame inconsistent", f.size);

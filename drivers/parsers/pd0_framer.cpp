@@ -1,6 +1,7 @@
 #include "drivers/parsers/pd0_framer.h"
 
 #include <algorithm>
+#include <cstring>
 
 #include "drivers/parsers/byte_order.h"
 
@@ -12,6 +13,8 @@ bool Pd0Framer::init(size_t max_ensemble_bytes) {
   pending_ = 0;
   probe_ = 0;
   end_of_input_ = false;
+  wait_for_certainty_ = false;
+  in_lock_ = false;
   return buffer_.init(max_ensemble_bytes + 2 + 4096);
 }
 
@@ -25,6 +28,7 @@ FrameStatus Pd0Framer::skip(size_t n, const char* reason, FrameError* error) {
   *error = {buffer_.offset(), n, reason};
   buffer_.consume(n);
   probe_ = 0;
+  in_lock_ = false;
   return FrameStatus::kBad;
 }
 
@@ -84,6 +88,31 @@ size_t Pd0Framer::laterValidFrame() {
   return 0;
 }
 
+// A checksum-valid frame may still be a false header whose checksum happened to hold (1 in 256 for an
+// 8-bit sum, e.g. a frame cut short whose length then runs into the next one): it is refused when an
+// ensemble starting inside it is valid, runs past its end and is followed by a header (or by the end
+// of the input). Out of lock (after skipped bytes) the answer waits while such a later ensemble is
+// incomplete (at most one maximal frame); in lock the frame is taken unless the refusal is certain,
+// so the steady state of a live line never waits (a file, waitForCertainty(), always waits). The scan is a memchr over the frame: a few percent of its cost.
+Pd0Framer::Overrun Pd0Framer::overrunByLaterFrame(size_t frame_bytes) const {
+  bool unknown = false;
+  const uint8_t* d = buffer_.data();
+  for (size_t at = 1; at < frame_bytes; ++at) {
+    const void* first = std::memchr(d + at, 0x7F, frame_bytes - at);
+    if (first == nullptr) break;
+    at = size_t(static_cast<const uint8_t*>(first) - d);
+    if (!headerAt(at)) continue;
+    size_t bytes = 0;
+    const char* why = "";
+    const Check c = checkAt(at, &bytes, &why);
+    if (c == Check::kIncomplete) unknown = unknown || !end_of_input_;
+    if (c != Check::kValid || at + bytes <= frame_bytes) continue;
+    if (headerAt(at + bytes) || (end_of_input_ && at + bytes == buffer_.size())) return Overrun::kYes;
+    unknown = unknown || (!end_of_input_ && at + bytes + 2 > buffer_.size());
+  }
+  return unknown ? Overrun::kNotYetKnown : Overrun::kNo;
+}
+
 FrameStatus Pd0Framer::next(RawFrame* frame, FrameError* error) {
   flushPending();
   const uint8_t* d = buffer_.data();
@@ -101,6 +130,14 @@ FrameStatus Pd0Framer::next(RawFrame* frame, FrameError* error) {
   switch (checkAt(0, &bytes, &why)) {
     case Check::kBad: return skip(1, why, error);
     case Check::kValid:
+      {
+        const Overrun o = overrunByLaterFrame(bytes);
+        if (o == Overrun::kYes) return skip(1, "PD0 ensemble overrun by a later valid ensemble", error);
+        if (o == Overrun::kNotYetKnown && (!in_lock_ || wait_for_certainty_) && !buffer_.full()) {
+          return FrameStatus::kNeedMore;
+        }
+      }
+      in_lock_ = true;
       *frame = {buffer_.offset(), d, bytes};
       pending_ = bytes;
       return FrameStatus::kFrame;

@@ -16,7 +16,8 @@ namespace deepnav {
 // already held are probed for a later complete, checksum-valid ensemble followed by a header: one is
 // taken as proof that the first header was false (a live line then does not wait for bytes that belong
 // to later ensembles). After endOfInput() an incomplete ensemble is dropped one byte at a time so the
-// ensembles inside it are found.
+// ensembles inside it are found. After skipped bytes, a checksum-valid ensemble is refused when a
+// valid ensemble starting inside it runs past its end and is followed by a header.
 class Pd0Framer {
  public:
   static constexpr size_t kMinEnsembleBytes = 6;
@@ -25,6 +26,9 @@ class Pd0Framer {
   size_t push(const uint8_t* data, size_t n) { return flushPending(), buffer_.append(data, n); }
   // No byte will follow (end of a file): what is held is framed without waiting.
   void endOfInput() { end_of_input_ = true; }
+  // The bytes come from a file, not a live line: waiting for later bytes costs no latency, so a
+  // frame in lock whose refusal depends on bytes not yet held waits for them too.
+  void waitForCertainty() { wait_for_certainty_ = true; }
   FrameStatus next(RawFrame* frame, FrameError* error);
 
  private:
@@ -33,6 +37,8 @@ class Pd0Framer {
   Check checkAt(size_t at, size_t* frame_bytes, const char** reason) const;
   bool headerAt(size_t at) const;
   size_t laterValidFrame();
+  enum class Overrun { kNo, kYes, kNotYetKnown };
+  Overrun overrunByLaterFrame(size_t frame_bytes) const;
   void flushPending();
   FrameStatus skip(size_t n, const char* reason, FrameError* error);
 
@@ -41,6 +47,8 @@ class Pd0Framer {
   size_t pending_ = 0;  // bytes of the last returned frame, consumed on the next call
   size_t probe_ = 0;    // next buffer position the probe for a later ensemble examines (0: not started)
   bool end_of_input_ = false;
+  bool wait_for_certainty_ = false;
+  bool in_lock_ = false;  // the frame at the front follows a returned frame, nothing skipped between
 };
 
 }  // namespace deepnav

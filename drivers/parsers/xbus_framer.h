@@ -14,12 +14,17 @@ namespace deepnav {
 // complete, checksum-valid message followed by a preamble and bus ID: one is taken as proof that the
 // first preamble was false (a live line then does not wait for bytes of later messages). After
 // endOfInput() an incomplete message is dropped one byte at a time so the messages inside it are found.
+// After skipped bytes, a checksum-valid message (an 8-bit sum passes 1 in 256 false ones) is refused
+// when a valid message starting inside it runs past its end and is followed by a preamble and bus ID.
 class XbusFramer {
  public:
   bool init(size_t max_payload_bytes);
   size_t push(const uint8_t* data, size_t n) { return flushPending(), buffer_.append(data, n); }
   // No byte will follow (end of a file): what is held is framed without waiting.
   void endOfInput() { end_of_input_ = true; }
+  // The bytes come from a file, not a live line: waiting for later bytes costs no latency, so a
+  // frame in lock whose refusal depends on bytes not yet held waits for them too.
+  void waitForCertainty() { wait_for_certainty_ = true; }
   FrameStatus next(RawFrame* frame, FrameError* error);
 
  private:
@@ -28,6 +33,8 @@ class XbusFramer {
   Check checkAt(size_t at, size_t* frame_bytes, const char** reason) const;
   bool headerAt(size_t at) const;
   size_t laterValidFrame();
+  enum class Overrun { kNo, kYes, kNotYetKnown };
+  Overrun overrunByLaterFrame(size_t frame_bytes) const;
   void flushPending();
   FrameStatus skip(size_t n, const char* reason, FrameError* error);
 
@@ -36,6 +43,8 @@ class XbusFramer {
   size_t pending_ = 0;
   size_t probe_ = 0;  // next buffer position the probe for a later message examines (0: not started)
   bool end_of_input_ = false;
+  bool wait_for_certainty_ = false;
+  bool in_lock_ = false;  // the frame at the front follows a returned frame, nothing skipped between
 };
 
 // A framed Xbus message split into its parts (the frame as returned by XbusFramer).

@@ -1,5 +1,7 @@
 // libFuzzer harness: arbitrary bytes as candump text and as raw CAN frames, through the NMEA 2000
-// fast-packet assembler and the 127250/127251/127257 decoders.
+// fast-packet assembler and the 127250/127251/127257 decoders; and the intact-frames property: three
+// good candump lines after the input (split at LF or CR as `deepnav decode` does) are all decoded to
+// their frames (intact_frames.h).
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
@@ -8,6 +10,7 @@
 #include "drivers/parsers/candump_line.h"
 #include "drivers/parsers/n2k_assembler.h"
 #include "drivers/parsers/n2k_heading_pgns.h"
+#include "tools/fuzz/intact_frames.h"
 
 namespace {
 
@@ -24,6 +27,30 @@ void decode(deepnav::N2kAssembler* a, const deepnav::CanFrame& f) {
   if (decodeN2kVesselHeading(m, &h, &why)) headingSampleFromN2k(h, 0, &hs);
   decodeN2kRateOfTurn(m, &r, &why);
   if (decodeN2kAttitude(m, &att, &why)) attitudeSampleFromN2k(att, 0, &as);
+}
+
+void checkIntactLines(const uint8_t* data, size_t size) {
+  using namespace deepnav;
+  const std::vector<std::string> lines = {"(1436509052.249713) can0 09F8027F#00FCFFFF0000FFFF",
+                                          "  can0  09F1128F   [8]  FF 4C 2E FF 7F FF 7F FD", "(1436509052.250000) can0 1F3#0102"};
+  std::vector<std::string> frames;
+  for (const std::string& l : lines) frames.push_back(l + "\n");
+  fuzz::IntactFrames intact(data, size, frames, lines);
+  const std::string_view text = intact.text();
+  size_t begin = 0;
+  for (size_t i = 0; i <= text.size(); ++i) {
+    if (i < text.size() && text[i] != '\n' && text[i] != '\r') continue;
+    const std::string_view line = text.substr(begin, std::min<size_t>(i - begin, 4096));
+    CanFrame f;
+    double t = 0;
+    const char* why = "";
+    size_t junk = 0;
+    if (i - begin <= 4096 && parseCandumpLineAfterJunk(line, &f, &t, &why, &junk) == CandumpLine::kFrame) {
+      intact.delivered(begin + junk, line.substr(junk));
+    }
+    begin = i + 1;
+  }
+  intact.verify("n2k-candump");
 }
 
 }  // namespace
@@ -52,5 +79,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     std::copy(data + i + 5, data + i + 13, f.data.begin());
     decode(&raw_assembler, f);
   }
+  checkIntactLines(data, size);
   return 0;
 }

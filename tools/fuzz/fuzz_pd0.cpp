@@ -1,4 +1,5 @@
-// libFuzzer harness: arbitrary bytes through the PD0 framer, ensemble decoder and DVL conversion.
+// libFuzzer harness: arbitrary bytes through the PD0 framer, ensemble decoder and DVL conversion; and
+// the intact-frames property: three good ensembles after the input are all decoded (intact_frames.h).
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -6,6 +7,32 @@
 #include "drivers/parsers/pd0_dvl_sample.h"
 #include "drivers/parsers/pd0_ensemble.h"
 #include "drivers/parsers/pd0_framer.h"
+#include "tests/support/sensor_frames.h"
+#include "tools/fuzz/intact_frames.h"
+
+namespace {
+
+void checkIntactEnsembles(const uint8_t* data, size_t size, deepnav::Pd0Ensemble* ensemble) {
+  using namespace deepnav;
+  std::vector<std::string> frames;
+  for (uint16_t i = 1; i <= 3; ++i) {
+    test::Pd0Spec s;
+    s.ensemble = i;
+    frames.push_back(fuzz::str(test::buildPd0(s)));
+  }
+  fuzz::IntactFrames intact(data, size, frames, frames);
+  Pd0Framer framer;
+  framer.init(65535);
+  framer.waitForCertainty();
+  fuzz::frameToEnd(&framer, intact.stream(), [&](const RawFrame& f) {
+    intact.framed(f.offset, f.size);
+    const char* why = "";
+    if (decodePd0Ensemble(f.data, f.size, ensemble, &why)) intact.delivered(f.offset, f.data, f.size);
+  });
+  intact.verify("pd0");
+}
+
+}  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   using namespace deepnav;
@@ -27,5 +54,6 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     if (pos == size) break;
     pos += framer.push(data + pos, std::min<size_t>(size - pos, 1 + (pos % 251)));
   }
+  checkIntactEnsembles(data, size, ensemble.get());
   return 0;
 }
