@@ -2,6 +2,7 @@
 
 #include "board/config/text_file.h"
 #include "board/config/yaml_document.h"
+#include "vision/markers/aruco_dictionary.h"
 
 #include <cmath>
 #include <fstream>
@@ -103,6 +104,10 @@ bool parsePanelDescription(const std::string& text, const std::string& name, Pan
   PanelDescription p;
   if (!root["dictionary"] || !root["dictionary"].IsScalar()) return c.fail("dictionary", "is missing");
   p.dictionary = root["dictionary"].Scalar();
+  int dictionary_id = 0;  // the marker detector refuses an unknown one at start-up: say so here
+  if (!arucoDictionaryFromName(p.dictionary, &dictionary_id)) {
+    return c.fail("dictionary", "is '" + p.dictionary + "', not an ArUco dictionary (e.g. DICT_4X4_50)");
+  }
   if (!readNumber(root["marker_size_m"], "marker_size_m", 0.01, 5, &p.marker_size_m, c) ||
       !readNumber(root["corner_radius_m"], "corner_radius_m", 0, 10, &p.corner_radius_m, c)) {
     return false;

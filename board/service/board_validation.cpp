@@ -12,6 +12,7 @@
 #include "drivers/probe/device_probe.h"
 #include "drivers/realtime/realtime.h"
 #include "drivers/replay/recording_reader.h"
+#include "vision/pipeline/vision_pipeline.h"
 
 namespace deepnav {
 namespace {
@@ -177,6 +178,19 @@ bool checkLoopRates(const BoardConfig& c, Checker& check) {
   return true;
 }
 
+// The vision pipeline's own start-up checks (marker dictionary, ORB, dense stereo, plane VO, workspace map)
+// on a throw-away pipeline, as the loop's init() makes it; its buffers are freed on return.
+bool checkVisionPipeline(const VehicleSetup& setup, Checker& check) {
+  std::string why;
+  try {
+    VisionPipeline pipeline;
+    if (pipeline.init(visionConfig(setup), &why)) return true;
+  } catch (const std::exception& e) {
+    why = std::string("vision: cannot set up the pipeline: ") + e.what();
+  }
+  return check.fail(why);
+}
+
 bool checkRealtimeRights(const BoardConfig::Realtime& r, const ValidatedBoard& out, Checker& check) {
   std::string why;
   if (out.has_process_cpus && !cpusAvailable(out.process_cpus, &why)) return check.fail("realtime.process_cpus", why);
@@ -229,7 +243,8 @@ bool validateBoard(const VehicleSetup& setup, const std::string& board_path, con
   }
   if (!replay.empty() && !checkReplay(setup, replay, key, check)) return false;
   out->replay_path = replay;
-  return checkLoopRates(c, check) && checkServiceDirectories(c.service, check) &&
+  return checkLoopRates(c, check) && checkVisionPipeline(setup, check) &&
+         checkServiceDirectories(c.service, check) &&
          checkOutputsAndRealtime(c, out, check);
 }
 

@@ -80,6 +80,8 @@ TEST(YamlInput, PanelFileRefusesRepeatedKeys) {
   EXPECT_FALSE(parsePanelDescription("dictionary: DICT_4X4_50\nmarker_size_m: 0.15\nmarker_size_m: 0.2\n",
                                      "panel.yaml", &panel, &error));
   EXPECT_TRUE(has(error, "panel.yaml: line 3: key 'marker_size_m' repeats the one of line 2")) << error;
+  EXPECT_FALSE(parsePanelDescription("dictionary: DICT_BOGUS\nmarker_size_m: 0.15\n", "panel.yaml", &panel, &error));
+  EXPECT_TRUE(has(error, "panel.yaml: key 'dictionary' is 'DICT_BOGUS', not an ArUco dictionary")) << error;
   EXPECT_FALSE(loadPanelDescription("/dev/zero", &panel, &error));
   EXPECT_TRUE(has(error, "/dev/zero: the panel description is larger than 4 MiB")) << error;
 }
