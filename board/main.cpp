@@ -23,7 +23,7 @@ int runReplay(const deepnav::ReplayOptions& options) {
   const bool ok = options.realtime ? deepnav::runRealtimeReplay(options, &summary, &error)
                                    : deepnav::runBenchReplay(options, &summary, &error);
   if (!ok) {
-    std::fprintf(stderr, "deepnav replay: %s\n", error.c_str());
+    std::fprintf(stderr, "deepnav replay: %s\n", error.empty() ? "failed (no reason given)" : error.c_str());
     return 1;
   }
   std::printf("%s", deepnav::formatReplaySummary(summary).c_str());

@@ -4,6 +4,7 @@
 #include "board/config/recording_options.h"
 #include "board/config/text_file.h"
 #include "board/config/board_overrides.h"
+#include "board/replay/output_file.h"
 #include "board/replay/workspace_files.h"
 
 #include <algorithm>
@@ -105,8 +106,7 @@ bool initRun(const ReplayOptions& o, const RecordingReader& reader, BenchRun* ru
   if (!run->scheduler.init(table, 2, c.loop.late_tick_tolerance, error)) return false;
   run->nav_task = run->scheduler.findTask("nav");
   run->vision_task = run->scheduler.findTask("vision");
-  std::error_code ec;
-  std::filesystem::create_directories(o.out_dir, ec);
+  if (!prepareOutputDir(o.out_dir, error)) return false;
   RecordingOptions ro = recordingOptions(c);
   ro.record_images = o.record_images;
   if (!run->writer.open(o.out_dir + "/replay.mcap", ro, error)) return false;
@@ -346,6 +346,16 @@ void computeReplayMetrics(ReplaySummary* s) {
   s->vo_consistency = computeVoConsistency(s->vo_offered, s->frame_truth);
 }
 
+// A recording with nothing to replay (cut off within its first records, or empty) is an error, not an
+// empty result: the message names the file and, when it is cut off, where.
+std::string replayNoDataError(const std::string& path, const RecordingReader& reader) {
+  std::string why = path + ": holds no data to replay";
+  if (!reader.truncated()) return why + " (no sensor sample, stereo pair or solution)";
+  why += ": the file is truncated";
+  if (!reader.warnings().empty()) why += " (" + reader.warnings().front() + ")";
+  return why;
+}
+
 bool loadReplaySetup(const std::string& board_path, const RecordingReader& reader, const std::string& recording,
                      VehicleSetup* setup, std::string* error) {
   if (!board_path.empty()) return loadVehicleSetup(board_path, setup, error);
@@ -387,6 +397,10 @@ bool runBenchReplay(const ReplayOptions& o, ReplaySummary* summary, std::string*
       [&](const ReplayEvent& e) { return summary->reproduce ? onReproduceEvent(run.get(), e) : onRerunEvent(run.get(), e); },
       error);
   summary->wall_s = usToS(monotonicUs() - wall_start);
+  if (ok && !run->any) {
+    if (error) *error = replayNoDataError(o.input_path, reader);
+    return false;
+  }
   summary->dive_s = usToS(run->last_us - run->first_us);
   summary->inputs = run->core.counters();
   summary->markers = run->core.markers().counters();
@@ -413,8 +427,12 @@ bool runBenchReplay(const ReplayOptions& o, ReplaySummary* summary, std::string*
   }
   run->writer.recordLoopStats(run->last_us, summary->loop);
   std::string close_error;
-  if (!run->writer.close(&close_error)) summary->warnings.push_back("replay.mcap: " + close_error);
+  const bool closed = run->writer.close(&close_error);  // the message names the file and the reason
   if (!ok) return false;
+  if (!closed) {
+    if (error) *error = close_error;
+    return false;
+  }
   computeReplayMetrics(summary);
   return writeReplayOutputs(o.out_dir, *summary, error) &&
          writeFusionCsv(o.out_dir + "/fusion.csv", run->sink.rows(), error);

@@ -103,6 +103,9 @@ bool runBenchReplay(const ReplayOptions& options, ReplaySummary* summary, std::s
 bool loadReplaySetup(const std::string& board_path, const RecordingReader& reader, const std::string& recording,
                      VehicleSetup* setup, std::string* error);
 
+// "<path>: holds no data to replay", and whether and where the file is cut off (reader.truncated()).
+std::string replayNoDataError(const std::string& path, const RecordingReader& reader);
+
 // Fills errors, smoothness and metrics from estimate, ticks and truth.
 void computeReplayMetrics(ReplaySummary* summary);
 

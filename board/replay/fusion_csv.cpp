@@ -1,8 +1,10 @@
 #include "board/replay/fusion_csv.h"
 
+#include <cerrno>
 #include <cstdio>
 #include <memory>
 
+#include "board/replay/output_file.h"
 #include "drivers/recording/fusion_codec.h"
 
 namespace deepnav {
@@ -13,9 +15,10 @@ void FusionCsvSink::recordFusion(const FusionDiagnostic& diagnostic) {
 }
 
 bool writeFusionCsv(const std::string& path, const std::vector<FusionDiagnostic>& rows, std::string* error) {
-  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "w"), &std::fclose);
+  errno = 0;
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(std::fopen(path.c_str(), "w"), &std::fclose);
   if (!f) {
-    if (error) *error = path + ": cannot write";
+    if (error) *error = writeFailure(path, errno);
     return false;
   }
   std::fprintf(f.get(), "t_s,source,reason,fused,test_ratio,dim");
@@ -32,7 +35,14 @@ bool writeFusionCsv(const std::string& path, const std::vector<FusionDiagnostic>
     }
     std::fprintf(f.get(), ",%d\n", d.mag_state);
   }
-  return true;
+  // fprintf's errors stick in the stream; fclose flushes the rest and reports its own.
+  const bool written = std::fflush(f.get()) == 0 && !std::ferror(f.get());
+  const int write_errno = errno;
+  errno = 0;
+  const bool closed = std::fclose(f.release()) == 0;
+  if (written && closed) return true;
+  if (error) *error = writeFailure(path, written ? errno : write_errno);
+  return false;
 }
 
 }  // namespace deepnav

@@ -7,6 +7,7 @@
 
 #include "board/config/board_overrides.h"
 #include "board/loop/live_loop.h"
+#include "board/replay/output_file.h"
 #include "drivers/clock/monotonic_clock.h"
 #include "drivers/replay/replay_source.h"
 
@@ -26,8 +27,7 @@ bool runRealtimeReplay(const ReplayOptions& o, ReplaySummary* summary, std::stri
       !applyBoardOverrides(o.overrides, &setup, error)) {
     return false;
   }
-  std::error_code ec;
-  std::filesystem::create_directories(o.out_dir, ec);
+  if (!prepareOutputDir(o.out_dir, error)) return false;
   const std::string live_path = o.out_dir + "/live.mcap";
   auto loop = std::make_unique<LiveLoop>();
   if (!loop->init(setup, live_path, error)) return false;
@@ -48,6 +48,10 @@ bool runRealtimeReplay(const ReplayOptions& o, ReplaySummary* summary, std::stri
   }
   source.stop();
   if (!loop->stop(error)) return false;
+  if (source.pushed() == 0) {
+    if (error) *error = replayNoDataError(o.input_path, reader);
+    return false;
+  }
   const LoopStats live_stats = loop->stats();
   const std::uint64_t drops = loop->recorderDrops() + source.refused();
   const std::uint64_t vision_failures = loop->visionFailures();

@@ -5,16 +5,14 @@
 
 #include "board/loop/scheduler.h"
 #include "board/replay/bench_replay.h"
+#include "board/replay/output_file.h"
 
 namespace deepnav {
 namespace {
 
 bool writeTum(const std::string& path, const std::vector<StampedPose>& poses, std::string* error) {
-  std::ofstream out(path);
-  if (!out) {
-    if (error) *error = path + ": cannot write";
-    return false;
-  }
+  std::ofstream out;
+  if (!openOutput(&out, path, error)) return false;
   char line[256];
   for (const auto& p : poses) {
     const auto& t = p.p_robot_in_odom_m;
@@ -23,7 +21,7 @@ bool writeTum(const std::string& path, const std::vector<StampedPose>& poses, st
                   q.y(), q.z(), q.w());
     out << line;
   }
-  return static_cast<bool>(out);
+  return closeOutput(&out, path, error);
 }
 
 std::string statsJson(const ErrorStats& s, double scale) {
@@ -148,22 +146,20 @@ void writeMetricsJson(std::ostream& out, const ReplaySummary& s) {
 }
 
 bool writeNees(const std::string& path, const ReplayMetrics& m, std::string* error) {
-  std::ofstream out(path);
+  std::ofstream out;
+  if (!openOutput(&out, path, error)) return false;
   out << "t_s,nees_position,nees_heading\n";
   char line[128];
   for (std::size_t k = 0; k < m.nees_t_s.size(); ++k) {
     std::snprintf(line, sizeof line, "%.6f,%.6g,%.6g\n", m.nees_t_s[k], m.nees_position[k], m.nees_heading[k]);
     out << line;
   }
-  if (!out.flush()) {
-    if (error) *error = path + ": cannot write";
-    return false;
-  }
-  return true;
+  return closeOutput(&out, path, error);
 }
 
 bool writeFrameStats(const std::string& path, const std::vector<FrameStat>& frames, std::string* error) {
-  std::ofstream out(path);
+  std::ofstream out;
+  if (!openOutput(&out, path, error)) return false;
   out << "t_s,stage,image_quality,selected,orb_vo,planes_vo,orb_tracked,planes,markers,face,orb_us,planes_us,map_us,"
          "total_us\n";
   char line[256];
@@ -173,11 +169,7 @@ bool writeFrameStats(const std::string& path, const std::vector<FrameStat>& fram
                   f.markers, f.face, f.orb_us, f.planes_us, f.map_us, f.total_us);
     out << line;
   }
-  if (!out.flush()) {
-    if (error) *error = path + ": cannot write";
-    return false;
-  }
-  return true;
+  return closeOutput(&out, path, error);
 }
 
 // The panel-relative error, ATE, RPE and NEES lines under the error table.
@@ -228,11 +220,9 @@ bool writeReplayOutputs(const std::string& dir, const ReplaySummary& s, std::str
                           !writeTum(dir + "/panel_truth.tum", s.metrics.panel_truth, error))) {
     return false;
   }
-  std::ofstream out(dir + "/summary.json");
-  if (!out) {
-    if (error) *error = dir + "/summary.json: cannot write";
-    return false;
-  }
+  const std::string summary_path = dir + "/summary.json";
+  std::ofstream out;
+  if (!openOutput(&out, summary_path, error)) return false;
   out << "{\n  \"mode\": \"" << (s.reproduce ? "reproduce" : "rerun") << "\",\n";
   out << "  \"ticks\": " << s.ticks << ",\n  \"frames\": " << s.frames << ",\n";
   out << "  \"vision_failures\": " << s.vision_failures << ",\n";
@@ -266,7 +256,7 @@ bool writeReplayOutputs(const std::string& dir, const ReplaySummary& s, std::str
   out << "  \"warnings\": [";
   for (std::size_t i = 0; i < s.warnings.size(); ++i) out << (i ? ", " : "") << jsonString(s.warnings[i]);
   out << "]\n}\n";
-  return static_cast<bool>(out);
+  return closeOutput(&out, summary_path, error);
 }
 
 std::string formatReplaySummary(const ReplaySummary& s) {

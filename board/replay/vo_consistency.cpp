@@ -1,5 +1,7 @@
 #include "board/replay/vo_consistency.h"
 
+#include "board/replay/output_file.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -144,7 +146,8 @@ VoConsistency computeVoConsistency(const std::vector<VoOffer>& offers, const std
 }
 
 bool writeVoConsistencyCsv(const std::string& path, const VoConsistency& c, std::string* error) {
-  std::ofstream out(path);
+  std::ofstream out;
+  if (!openOutput(&out, path, error)) return false;
   out << "t_s,t_reference_s,source,outcome,dof,nees,ex_m,ey_m,ez_m,erx_rad,ery_rad,erz_rad,"
          "sx_m,sy_m,sz_m,srx_rad,sry_rad,srz_rad\n";
   char line[512];
@@ -156,11 +159,7 @@ bool writeVoConsistencyCsv(const std::string& path, const VoConsistency& c, std:
                   r.sigma[1], r.sigma[2], r.sigma[3], r.sigma[4], r.sigma[5]);
     out << line;
   }
-  if (!out.flush()) {
-    if (error) *error = path + ": cannot write";
-    return false;
-  }
-  return true;
+  return closeOutput(&out, path, error);
 }
 
 std::string voConsistencyJson(const VoConsistency& c) {

@@ -1,9 +1,12 @@
 #include "board/replay/workspace_files.h"
 
+#include <cerrno>
 #include <filesystem>
 #include <fstream>
 
 #include <yaml-cpp/yaml.h>
+
+#include "board/replay/output_file.h"
 
 namespace deepnav {
 
@@ -11,10 +14,11 @@ bool saveWorkspace(const std::string& dir, const WorkspaceModel& model, const Ei
                    std::string* error) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
+  errno = 0;
   std::ofstream bt(dir + "/workspace.bt", std::ios::binary);
   Eigen::Isometry3d T_panel_map;
   if (!bt || !model.save(bt, T_odom_panel, &T_panel_map) || !bt.flush()) {
-    if (error) *error = dir + "/workspace.bt: cannot write";
+    if (error) *error = writeFailure(dir + "/workspace.bt", errno);
     return false;
   }
   const Eigen::Quaterniond q(T_panel_map.linear());
@@ -25,13 +29,10 @@ bool saveWorkspace(const std::string& dir, const WorkspaceModel& model, const Ei
     << YAML::BeginSeq << q.x() << q.y() << q.z() << q.w() << YAML::EndSeq << YAML::Key << "resolution_m"
     << YAML::Value << model.map().config().resolution_m << YAML::Key << "occupied_voxels" << YAML::Value
     << model.voxels() << YAML::EndMap;
-  std::ofstream meta(dir + "/workspace.yaml");
+  std::ofstream meta;
+  if (!openOutput(&meta, dir + "/workspace.yaml", error)) return false;
   meta << y.c_str() << "\n";
-  if (!meta.flush()) {
-    if (error) *error = dir + "/workspace.yaml: cannot write";
-    return false;
-  }
-  return true;
+  return closeOutput(&meta, dir + "/workspace.yaml", error);
 }
 
 namespace {

@@ -104,6 +104,51 @@ std::string readText(const std::string& path) {
   return text.str();
 }
 
+// Issue 21: a recording cut at 1 KB replayed with rc 0 and empty outputs. Now an error naming the file.
+TEST_F(ReplayTest, RecordingCutWithinItsFirstKilobyteIsAnErrorNamingTheFile) {
+  const std::string cut = ::testing::TempDir() + "cut_1k.mcap";
+  std::filesystem::copy_file(dive_, cut, std::filesystem::copy_options::overwrite_existing);
+  std::filesystem::resize_file(cut, 1024);
+  ReplayOptions o;
+  o.input_path = cut;
+  o.out_dir = ::testing::TempDir() + "replay_cut_1k";
+  o.progress = false;
+  ReplaySummary s;
+  std::string error;
+  EXPECT_FALSE(runBenchReplay(o, &s, &error));
+  EXPECT_NE(error.find(cut + ": holds no data to replay: the file is truncated"), std::string::npos) << error;
+}
+
+// Issue 21: `replay --out ""` wrote its outputs into the root directory. Now refused.
+TEST_F(ReplayTest, EmptyOutputDirectoryIsRefused) {
+  ReplayOptions o;
+  o.input_path = dive_;
+  o.out_dir = "";
+  o.progress = false;
+  ReplaySummary s;
+  std::string error;
+  EXPECT_FALSE(runBenchReplay(o, &s, &error));
+  EXPECT_NE(error.find("--out: the output directory is empty"), std::string::npos) << error;
+}
+
+// Issue 21: a full disk gave "deepnav replay: " and nothing else. Now the file and the system's reason:
+// trajectory.tum goes to /dev/full (every write fails with ENOSPC).
+TEST_F(ReplayTest, AFullDiskNamesTheFileAndTheReason) {
+  const std::string out = ::testing::TempDir() + "replay_full_disk";
+  std::filesystem::create_directories(out);
+  std::filesystem::remove(out + "/trajectory.tum");
+  std::filesystem::create_symlink("/dev/full", out + "/trajectory.tum");
+  ReplayOptions o;
+  o.input_path = dive_;
+  o.out_dir = out;
+  o.progress = false;
+  ReplaySummary s;
+  std::string error;
+  EXPECT_FALSE(runBenchReplay(o, &s, &error));
+  EXPECT_EQ(error, out + "/trajectory.tum: cannot write: No space left on device");
+  std::filesystem::remove(out + "/trajectory.tum");
+}
+
 TEST_F(ReplayTest, DeadReckoningRunUsesTheNavigationSensorsOnly) {
   // GIVEN the 15 s dive WHEN replayed as the dead-reckoning run (no VO, no markers)
   const std::string out = ::testing::TempDir() + "replay_dr";
