@@ -118,7 +118,9 @@ bool initRun(const ReplayOptions& o, const RecordingReader& reader, BenchRun* ru
     if (error) *error = "replay: cannot allocate the vision result queue";
     return false;
   }
-  if (!run->vision.init(visionConfig(run->setup), error)) return false;
+  VisionPipelineConfig vision = visionConfig(run->setup);
+  vision.stage_probe_for_test = o.vision_stage_probe;
+  if (!run->vision.init(vision, error)) return false;
   run->vision_off = !c.markers.enabled && c.vision.vo_mode == "none";
   run->context.init(robotFromCamera(run->setup));
   if (!run->core.init(run->setup, &run->sink, error)) return false;

@@ -16,6 +16,7 @@
 #include "nav/metrics/stamped_pose.h"
 #include "nav/metrics/trajectory_errors.h"
 #include "nav/types/loop_stats.h"
+#include "vision/pipeline/vision_pipeline.h"
 
 namespace deepnav {
 
@@ -31,6 +32,9 @@ struct ReplayOptions {
   std::string workspace_in;      // saved workspace to start from (stage 2 after the panel is found again)
   std::string workspace_out;     // where to save the workspace at the end (empty: not saved)
   ReplayTap* tap = nullptr;      // bench fault injection / observation of every input and tick (not owned)
+  // Bench fault injection in the vision worker: VisionPipelineConfig::stage_probe_for_test (a stage that
+  // throws as a library would). nullptr: none.
+  void (*vision_stage_probe)(VisionStage stage) = nullptr;
   // The true panel pose in the recording's odometry frame for the panel-relative error; nullopt: the
   // recording's own (replay_metrics.h, kTruthPanelMetadata), if any.
   std::optional<Eigen::Isometry3d> truth_T_odom_panel;
