@@ -201,6 +201,28 @@ TEST(FaultSensors, StuckGarbageSlowAndIntermittentStreams) {
   }
 }
 
+TEST(FaultSensors, FrozenImuIsRefusedAndCoastsAsInAnOutage) {
+  // GIVEN the IMU repeating its last message (fresh stamps) from 12 to 17 s
+  const double t0 = 12.0, t1 = 17.0;
+  const FaultRun run = replayWithFaults(sensorDive("imu_stuck", fault(kImu, "stuck", t0, t1), kDive_s), "imu_stuck");
+  // THEN it is flagged once the board's count of identical samples has come (ekf.imu_stuck_after_samples:
+  // 10 at 100 Hz) plus the IMU's stale timeout, the outputs stay finite, and the estimate is no worse
+  // than with the IMU silent over the same 5 s (the repeated samples are not integrated)
+  EXPECT_EQ(nonFiniteTicks(run), 0);
+  const double flag_s = timeToFlag(run, kImu, t0, t1);
+  EXPECT_GE(flag_s, 0.0) << "never flagged";
+  EXPECT_LE(flag_s, 10 * kImu.period_s + kImu.timeout_s + 0.02);
+  const testing::Deviation d = maxDeviation(run, cleanRun());
+  const testing::Deviation missing = maxDeviation(dropoutRun(kImu, t0, t1), cleanRun());
+  expectNoWorseThanMissing(d, missing, 0.02, 0.15);
+  // AND it is fused again after the fault
+  const TickRecord& end = tickAt(run, kDive_s - 1.0);
+  EXPECT_EQ(end.faults & (staleBit(kSrcImu) | rejectBit(kSrcImu)), 0u);
+  std::printf("[fault] imu stuck 12-17 s: flagged %s, max deviation %.4f m %.3f deg (IMU silent instead: %.4f m %.3f deg)\n",
+              flag_s < 0 ? "never" : strf("%.2f s after", flag_s).c_str(), d.position_m, d.angle_rad * 180.0 / M_PI,
+              missing.position_m, missing.angle_rad * 180.0 / M_PI);
+}
+
 TEST(FaultSensors, ClockJumpsOfASensor) {
   struct Case {
     Sensor sensor;
