@@ -33,7 +33,9 @@ bool LiveLoop::init(const VehicleSetup& setup, const std::string& recording_path
   nav_task_ = scheduler_.findTask("nav");
   stats_task_ = scheduler_.findTask("stats");
   vision_task_ = scheduler_.findTask("vision");
-  if (!vision_.init(visionConfig(setup), error)) return false;
+  VisionPipelineConfig vision = visionConfig(setup);
+  vision.stage_probe_for_test = vision_probe_;
+  if (!vision_.init(vision, error)) return false;
   if (!feedback_.allocate(PoseHistory::kCapacity)) {
     if (error) *error = "loop: cannot allocate the nav-to-vision feedback ring";
     return false;

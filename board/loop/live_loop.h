@@ -41,6 +41,8 @@ class LiveLoop {
   void addRecordingMetadata(const std::string& name, const std::map<std::string, std::string>& values) {
     extra_metadata_.push_back({name, values});
   }
+  // Before init(), bench and tests only: VisionPipelineConfig::stage_probe_for_test of the vision worker.
+  void setVisionStageProbeForTest(void (*probe)(VisionStage stage)) { vision_probe_ = probe; }
   // recording_path empty: no recording.
   bool init(const VehicleSetup& setup, const std::string& recording_path, std::string* error);
   LiveInputs& inputs() { return inputs_; }
@@ -113,6 +115,7 @@ class LiveLoop {
   std::function<void(const char*)> thread_hook_;
   std::function<void(const WorkspaceModel&, const VisionContext&)> vision_hook_;
   QueuedRecorder::MetadataList extra_metadata_;
+  void (*vision_probe_)(VisionStage stage) = nullptr;
 };
 
 }  // namespace deepnav

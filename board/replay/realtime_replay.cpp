@@ -30,6 +30,7 @@ bool runRealtimeReplay(const ReplayOptions& o, ReplaySummary* summary, std::stri
   if (!prepareOutputDir(o.out_dir, error)) return false;
   const std::string live_path = o.out_dir + "/live.mcap";
   auto loop = std::make_unique<LiveLoop>();
+  loop->setVisionStageProbeForTest(o.vision_stage_probe);
   if (!loop->init(setup, live_path, error)) return false;
   ReplaySource source;
   if (!source.open(o.input_path, error)) return false;

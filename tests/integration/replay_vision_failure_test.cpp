@@ -13,6 +13,7 @@
 #include <opencv2/calib3d.hpp>
 
 #include "board/replay/bench_replay.h"
+#include "board/replay/realtime_replay.h"
 #include "tests/support/test_dive.h"
 
 namespace deepnav {
@@ -72,6 +73,31 @@ TEST(ReplayVisionFailure, AThrowingStageCostsItsPairsNotTheReplay) {
   EXPECT_NE(formatReplaySummary(s).find(std::to_string(g_thrown) + " stereo pairs failed"), std::string::npos);
   std::printf("%d of %llu pairs threw in the marker stage; replay ran to the end, %llu ticks\n", g_thrown,
               static_cast<unsigned long long>(s.frames), static_cast<unsigned long long>(s.ticks));
+}
+
+// The same through the threaded runtime (the vision worker thread of `deepnav run`): an exception that
+// escaped there reached std::terminate.
+TEST(ReplayVisionFailure, AThrowingStageOnTheVisionWorkerThreadCostsItsPairsNotTheRun) {
+  const std::string dive = testing::makeTestDive("vision_failure_live_dive", 4.0);
+  g_marker_calls = 0;
+  g_thrown = 0;
+  ReplayOptions o;
+  o.input_path = dive;
+  o.out_dir = ::testing::TempDir() + "vision_failure_live";
+  o.progress = false;
+  o.vision_stage_probe = &sgbmThrowsOnEveryThirdPair;
+  ReplaySummary s;
+  std::string error;
+  ASSERT_TRUE(runRealtimeReplay(o, &s, &error)) << error;
+  EXPECT_GT(s.solutions_compared, 380u);  // the loop ran on at 100 Hz
+  EXPECT_EQ(s.mismatches, 0u);
+  EXPECT_GT(g_thrown, 5);
+  EXPECT_EQ(s.vision_failures, static_cast<std::uint64_t>(g_thrown));
+  bool warned = false;
+  for (const std::string& w : s.warnings) warned |= w.find("stereo pairs skipped: a vision stage threw") != std::string::npos;
+  EXPECT_TRUE(warned);
+  std::printf("vision worker thread: %d pairs threw, %llu ticks reproduced\n", g_thrown,
+              static_cast<unsigned long long>(s.solutions_compared));
 }
 
 }  // namespace
