@@ -299,11 +299,16 @@ bool onReproduceEvent(BenchRun* run, const ReplayEvent& e) {
   return true;
 }
 
-// Pairs a vision stage threw on: counted, and the last exception named among the warnings.
-void noteVisionFailures(const VisionPipeline& vision, ReplaySummary* summary) {
+// Pairs a vision stage threw on: counted, the last exception named among the warnings and, for whoever
+// reads the output recording, in its metadata "deepnav.vision_failures" (absent when none failed).
+void noteVisionFailures(const VisionPipeline& vision, RecordingWriter* writer, ReplaySummary* summary) {
   summary->vision_failures = vision.failedPairs();
   if (summary->vision_failures == 0) return;
   const VisionStageFailure& f = vision.lastFailure();
+  writer->recordMetadata("deepnav.vision_failures", {{"pairs", std::to_string(summary->vision_failures)},
+                                                     {"last_pair", std::to_string(f.sequence)},
+                                                     {"last_stage", visionStageName(f.stage)},
+                                                     {"last_message", f.what}});
   summary->warnings.push_back(std::to_string(summary->vision_failures) +
                               " stereo pairs skipped: a vision stage threw (last: pair " + std::to_string(f.sequence) +
                               ", " + visionStageName(f.stage) + ": " + f.what + ")");
@@ -414,7 +419,7 @@ bool runBenchReplay(const ReplayOptions& o, ReplaySummary* summary, std::string*
   summary->vo = run->core.vo().counters();
   summary->modalities = modalityCounts(run->core, summary->vo_offers);
   summary->estimator_states = estimatorStatesReport(run->core.ekf());
-  noteVisionFailures(run->vision, summary);
+  noteVisionFailures(run->vision, &run->writer, summary);
   summary->map_frames = run->vision.workspace().frames();
   summary->map_voxels = run->vision.workspace().voxels();
   if (!o.workspace_out.empty() && !summary->reproduce) {

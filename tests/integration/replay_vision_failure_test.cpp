@@ -71,6 +71,13 @@ TEST(ReplayVisionFailure, AThrowingStageCostsItsPairsNotTheReplay) {
   text << json.rdbuf();
   EXPECT_NE(text.str().find("\"vision_failures\": " + std::to_string(g_thrown)), std::string::npos);
   EXPECT_NE(formatReplaySummary(s).find(std::to_string(g_thrown) + " stereo pairs failed"), std::string::npos);
+  RecordingReader recorded;
+  std::string error;
+  ASSERT_TRUE(recorded.open(out + "/replay.mcap", &error)) << error;
+  const auto* failures = recorded.metadata("deepnav.vision_failures");
+  ASSERT_NE(failures, nullptr);
+  EXPECT_EQ(failures->at("pairs"), std::to_string(g_thrown));
+  EXPECT_EQ(failures->at("last_stage"), "markers");
   std::printf("%d of %llu pairs threw in the marker stage; replay ran to the end, %llu ticks\n", g_thrown,
               static_cast<unsigned long long>(s.frames), static_cast<unsigned long long>(s.ticks));
 }
