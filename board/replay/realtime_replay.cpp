@@ -33,7 +33,10 @@ bool runRealtimeReplay(const ReplayOptions& o, ReplaySummary* summary, std::stri
   loop->setVisionStageProbeForTest(o.vision_stage_probe);
   if (!loop->init(setup, live_path, error)) return false;
   ReplaySource source;
-  if (!source.open(o.input_path, error)) return false;
+  if (!source.open(o.input_path, error)) {
+    if (error && reader.truncated() && !reader.warnings().empty()) *error += " (" + reader.warnings().front() + ")";
+    return false;
+  }
   const TimeUs offset = source.firstTimeUs() - (monotonicUs() + kStartDelayUs);
   if (!loop->start(offset, error)) return false;
   source.start(&loop->inputs(), offset);

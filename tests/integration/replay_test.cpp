@@ -9,6 +9,7 @@
 
 #include "board/loop/nav_core.h"
 #include "board/replay/bench_replay.h"
+#include "board/replay/realtime_replay.h"
 #include "tests/support/test_dive.h"
 
 namespace deepnav {
@@ -117,6 +118,11 @@ TEST_F(ReplayTest, RecordingCutWithinItsFirstKilobyteIsAnErrorNamingTheFile) {
   std::string error;
   EXPECT_FALSE(runBenchReplay(o, &s, &error));
   EXPECT_NE(error.find(cut + ": holds no data to replay: the file is truncated"), std::string::npos) << error;
+  // AND the same through the threaded runtime (--realtime)
+  error.clear();
+  EXPECT_FALSE(runRealtimeReplay(o, &s, &error));
+  EXPECT_NE(error.find(cut + ": no sensor samples to replay"), std::string::npos) << error;
+  EXPECT_NE(error.find("cut off after 0 complete chunks"), std::string::npos) << error;
 }
 
 // Issue 21: `replay --out ""` wrote its outputs into the root directory. Now refused.
