@@ -9,6 +9,7 @@
 #include "board/cli/decode_command.h"
 #include "board/cli/stereo_command.h"
 #include "board/config/board_config.h"
+#include "board/config/vehicle_setup.h"
 #include "board/replay/bench_replay.h"
 #include "board/replay/realtime_replay.h"
 #include "board/service/run_command.h"
@@ -56,9 +57,10 @@ int runConfig(const std::string& board, bool list) {
     std::printf("%s", deepnav::describeBoardParams().c_str());
     return 0;
   }
-  deepnav::BoardConfig config;
+  // The whole vehicle setup: the board and the panel and calibration files it names, as run loads them.
+  deepnav::VehicleSetup setup;
   std::string error;
-  if (!deepnav::loadBoardConfig(board, &config, &error)) {
+  if (!deepnav::loadVehicleSetup(board, &setup, &error)) {
     std::fprintf(stderr, "deepnav config: %s\n", error.c_str());
     return 2;
   }

@@ -241,7 +241,8 @@ bool writeReplayOutputs(const std::string& dir, const ReplaySummary& s, std::str
   out << "  \"estimator_states\": " << estimatorStatesJson(s.estimator_states) << ",\n";
   out << "  \"vo_consistency\": " << voConsistencyJson(s.vo_consistency) << ",\n";
   out << "  \"vo\": {\"offered\": " << s.vo.measurements << ", \"accepted\": " << s.vo.accepted
-      << ", \"rejected\": " << s.vo.rejected << ", \"no_clone\": " << s.vo.no_clone << ", \"accepted_orb\": "
+      << ", \"rejected\": " << s.vo.rejected << ", \"no_clone\": " << s.vo.no_clone
+      << ", \"clones_late\": " << s.vo.clones_late << ", \"accepted_orb\": "
       << s.vo.accepted_by_source[1] << ", \"accepted_planes\": " << s.vo.accepted_by_source[2] << "},\n";
   out << "  \"read\": {\"messages\": " << s.read.messages << ", \"bad_messages\": " << s.read.bad_messages
       << ", \"unknown_topic\": " << s.read.unknown_topic << ", \"incomplete_frames\": " << s.read.incomplete_frames

@@ -6,6 +6,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include "board/config/yaml_document.h"
 #include "board/replay/output_file.h"
 
 namespace deepnav {
@@ -38,8 +39,10 @@ bool saveWorkspace(const std::string& dir, const WorkspaceModel& model, const Ei
 namespace {
 
 bool readPose(const std::string& path, Eigen::Isometry3d* T_panel_map, std::string* error) {
+  std::string text;
+  YAML::Node root;
+  if (!loadYamlFile(path, "the workspace", &text, &root, error)) return false;
   try {
-    const YAML::Node root = YAML::LoadFile(path);
     const YAML::Node p = root["p_map_in_panel_m"];
     const YAML::Node q = root["q_panel_map_xyzw"];
     if (!p || !p.IsSequence() || p.size() != 3) throw std::runtime_error("p_map_in_panel_m: expected [x, y, z]");
