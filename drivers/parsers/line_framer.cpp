@@ -12,6 +12,8 @@ bool LineFramer::init(std::string_view start_chars, size_t max_line_bytes, bool 
   end_of_input_ = false;
   if (start_chars.empty() || max_line_bytes < 4) return false;
   start_chars_ = start_chars;
+  is_start_.fill(false);
+  for (const char c : start_chars) is_start_[uint8_t(c)] = true;
   max_line_ = max_line_bytes;
   pending_ = 0;
   return buffer_.init(max_line_bytes + 2 + 4096);

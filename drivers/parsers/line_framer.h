@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <string_view>
@@ -30,7 +31,7 @@ class LineFramer {
 
  private:
   void flushPending();
-  bool isStart(uint8_t c) const { return start_chars_.find(char(c)) != std::string_view::npos; }
+  bool isStart(uint8_t c) const { return is_start_[c]; }
   bool restartsLine(uint8_t first) const {
     return restart_on_start_ && whole_line_starts_.find(char(first)) == std::string_view::npos;
   }
@@ -38,6 +39,7 @@ class LineFramer {
   FrameStatus lineAt(size_t end, size_t resume, RawFrame* frame, FrameError* error);
 
   StreamBuffer buffer_;
+  std::array<bool, 256> is_start_{};  // start_chars_ as a table: tested on every byte
   std::string_view start_chars_;
   std::string_view whole_line_starts_;
   size_t max_line_ = 0;

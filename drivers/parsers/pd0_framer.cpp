@@ -15,6 +15,7 @@ bool Pd0Framer::init(size_t max_ensemble_bytes) {
   end_of_input_ = false;
   wait_for_certainty_ = false;
   in_lock_ = false;
+  last_frame_bytes_ = 0;
   return buffer_.init(max_ensemble_bytes + 2 + 4096);
 }
 
@@ -37,7 +38,7 @@ bool Pd0Framer::headerAt(size_t at) const {
   return at + 1 < buffer_.size() && d[at] == 0x7F && d[at + 1] == 0x7F;
 }
 
-Pd0Framer::Check Pd0Framer::checkAt(size_t at, size_t* frame_bytes, const char** reason) const {
+Pd0Framer::Check Pd0Framer::checkAt(size_t at, size_t* frame_bytes, const char** reason, bool check_offsets) const {
   const uint8_t* d = buffer_.data() + at;
   const size_t avail = buffer_.size() - at;
   if (avail < 6) return Check::kIncomplete;
@@ -47,11 +48,13 @@ Pd0Framer::Check Pd0Framer::checkAt(size_t at, size_t* frame_bytes, const char**
     *reason = "PD0 ensemble length out of range";
     return Check::kBad;
   }
-  // The data type offsets, checked as the decoder checks them, before any checksum: a run of noise
-  // (0x7F 0x7F 0x7F...) then costs no checksum over a claimed length at every byte.
+  *frame_bytes = length + 2;
+  if (avail < length + 2) return Check::kIncomplete;
+  // The data type offsets, checked as the decoder checks them, before the checksum: a run of noise
+  // (0x7F 0x7F 0x7F...) then costs no checksum over a claimed length at every byte. In lock on a
+  // live line the decoder's own check is enough.
   const size_t table_end = kMinEnsembleBytes + 2 * num_types;
-  if (avail < table_end) return Check::kIncomplete;
-  for (size_t i = 0; i < num_types; ++i) {
+  for (size_t i = 0; check_offsets && i < num_types; ++i) {
     const size_t begin = readLe16(d + 6 + 2 * i);
     const size_t end = i + 1 < num_types ? readLe16(d + 8 + 2 * i) : length;
     if (begin < table_end || begin + 2 > end || end > length) {
@@ -59,8 +62,6 @@ Pd0Framer::Check Pd0Framer::checkAt(size_t at, size_t* frame_bytes, const char**
       return Check::kBad;
     }
   }
-  *frame_bytes = length + 2;
-  if (avail < length + 2) return Check::kIncomplete;
   uint32_t sum = 0;
   for (size_t i = 0; i < length; ++i) sum += d[i];
   if ((sum & 0xFFFF) != readLe16(d + length)) {
@@ -74,8 +75,15 @@ Pd0Framer::Check Pd0Framer::checkAt(size_t at, size_t* frame_bytes, const char**
 // 0. The probe stops at a later candidate still incomplete (it may be the first real ensemble) and
 // resumes there on the next call, so each held byte is examined once per first header: linear cost.
 size_t Pd0Framer::laterValidFrame() {
+  const uint8_t* d = buffer_.data();
   const size_t size = buffer_.size();
   for (probe_ = std::max<size_t>(probe_, 1); probe_ + 1 < size; ++probe_) {
+    const void* first = std::memchr(d + probe_, 0x7F, size - 1 - probe_);
+    if (first == nullptr) {
+      probe_ = size - 1;
+      break;
+    }
+    probe_ = size_t(static_cast<const uint8_t*>(first) - d);
     if (!headerAt(probe_)) continue;
     size_t bytes = 0;
     const char* why = "";
@@ -127,17 +135,20 @@ FrameStatus Pd0Framer::next(RawFrame* frame, FrameError* error) {
   }
   size_t bytes = 0;
   const char* why = "";
-  switch (checkAt(0, &bytes, &why)) {
+  switch (checkAt(0, &bytes, &why, !in_lock_ || wait_for_certainty_)) {
     case Check::kBad: return skip(1, why, error);
     case Check::kValid:
       {
-        const Overrun o = overrunByLaterFrame(bytes);
+        // In lock on a live line the 16-bit sum is trusted (1 in 65536 cut frames pass): no scan.
+        const bool scan = !in_lock_ || wait_for_certainty_;
+        const Overrun o = scan ? overrunByLaterFrame(bytes) : Overrun::kNo;
         if (o == Overrun::kYes) return skip(1, "PD0 ensemble overrun by a later valid ensemble", error);
         if (o == Overrun::kNotYetKnown && (!in_lock_ || wait_for_certainty_) && !buffer_.full()) {
           return FrameStatus::kNeedMore;
         }
       }
       in_lock_ = true;
+      last_frame_bytes_ = bytes;
       *frame = {buffer_.offset(), d, bytes};
       pending_ = bytes;
       return FrameStatus::kFrame;
@@ -146,6 +157,8 @@ FrameStatus Pd0Framer::next(RawFrame* frame, FrameError* error) {
   if (size == 0) return FrameStatus::kNeedMore;
   if (end_of_input_) return skip(size < 2 ? size : 1, "PD0 ensemble cut short by the end of the input", error);
   if (buffer_.full()) return skip(1, "PD0 ensemble larger than the buffer", error);
+  // In lock, a frame no longer than the last one cannot hold a later one yet: no probe (steady state).
+  if (in_lock_ && size <= last_frame_bytes_) return FrameStatus::kNeedMore;
   if (const size_t at = laterValidFrame(); at > 0) return skip(at, "PD0 header whose length runs over a later valid ensemble", error);
   return FrameStatus::kNeedMore;
 }

@@ -34,7 +34,7 @@ class Pd0Framer {
  private:
   enum class Check { kBad, kIncomplete, kValid };
   // The candidate ensemble whose header starts `at` bytes into the buffer.
-  Check checkAt(size_t at, size_t* frame_bytes, const char** reason) const;
+  Check checkAt(size_t at, size_t* frame_bytes, const char** reason, bool check_offsets = true) const;
   bool headerAt(size_t at) const;
   size_t laterValidFrame();
   enum class Overrun { kNo, kYes, kNotYetKnown };
@@ -48,6 +48,7 @@ class Pd0Framer {
   size_t probe_ = 0;    // next buffer position the probe for a later ensemble examines (0: not started)
   bool end_of_input_ = false;
   bool wait_for_certainty_ = false;
+  size_t last_frame_bytes_ = 0;  // size of the last frame returned
   bool in_lock_ = false;  // the frame at the front follows a returned frame, nothing skipped between
 };
 

@@ -21,6 +21,7 @@ bool XbusFramer::init(size_t max_payload_bytes) {
   end_of_input_ = false;
   wait_for_certainty_ = false;
   in_lock_ = false;
+  last_frame_bytes_ = 0;
   return buffer_.init(max_payload_bytes + 7 + 4096);
 }
 
@@ -78,8 +79,15 @@ XbusFramer::Check XbusFramer::checkAt(size_t at, size_t* frame_bytes, const char
 // bus ID, or 0. The probe stops at a later candidate still incomplete (it may be the first real
 // message) and resumes there on the next call: each held byte is examined once per first preamble.
 size_t XbusFramer::laterValidFrame() {
+  const uint8_t* d = buffer_.data();
   const size_t size = buffer_.size();
   for (probe_ = std::max<size_t>(probe_, 1); probe_ + 1 < size; ++probe_) {
+    const void* first = std::memchr(d + probe_, kPreamble, size - 1 - probe_);
+    if (first == nullptr) {
+      probe_ = size - 1;
+      break;
+    }
+    probe_ = size_t(static_cast<const uint8_t*>(first) - d);
     if (!headerAt(probe_)) continue;
     size_t bytes = 0;
     const char* why = "";
@@ -131,13 +139,17 @@ FrameStatus XbusFramer::next(RawFrame* frame, FrameError* error) {
     case Check::kBad: return skip(1, why, error);
     case Check::kValid:
       {
-        const Overrun o = overrunByLaterFrame(bytes);
+        // In lock on a live line only a certain refusal counts, and it needs a later message ending past
+        // this one and the next preamble: with fewer bytes held there is nothing to scan.
+        const bool scan = !in_lock_ || wait_for_certainty_ || end_of_input_ || size > bytes + 2;
+        const Overrun o = scan ? overrunByLaterFrame(bytes) : Overrun::kNo;
         if (o == Overrun::kYes) return skip(1, "Xbus message overrun by a later valid message", error);
         if (o == Overrun::kNotYetKnown && (!in_lock_ || wait_for_certainty_) && !buffer_.full()) {
           return FrameStatus::kNeedMore;
         }
       }
       in_lock_ = true;
+      last_frame_bytes_ = bytes;
       *frame = {buffer_.offset(), d, bytes};
       pending_ = bytes;
       return FrameStatus::kFrame;
@@ -145,6 +157,8 @@ FrameStatus XbusFramer::next(RawFrame* frame, FrameError* error) {
   }
   if (end_of_input_) return skip(1, "Xbus message cut short by the end of the input", error);
   if (buffer_.full()) return skip(1, "Xbus message larger than the buffer", error);
+  // In lock, a frame no longer than the last one cannot hold a later one yet: no probe (steady state).
+  if (in_lock_ && size <= last_frame_bytes_) return FrameStatus::kNeedMore;
   if (const size_t at = laterValidFrame(); at > 0) return skip(at, "Xbus length runs over a later valid message", error);
   return FrameStatus::kNeedMore;
 }

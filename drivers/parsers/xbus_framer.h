@@ -44,6 +44,7 @@ class XbusFramer {
   size_t probe_ = 0;  // next buffer position the probe for a later message examines (0: not started)
   bool end_of_input_ = false;
   bool wait_for_certainty_ = false;
+  size_t last_frame_bytes_ = 0;  // size of the last frame returned
   bool in_lock_ = false;  // the frame at the front follows a returned frame, nothing skipped between
 };
 

@@ -32,7 +32,7 @@ void decode(deepnav::N2kAssembler* a, const deepnav::CanFrame& f) {
 void checkIntactLines(const uint8_t* data, size_t size) {
   using namespace deepnav;
   const std::vector<std::string> lines = {"(1436509052.249713) can0 09F8027F#00FCFFFF0000FFFF",
-                                          "  can0  09F1128F   [8]  FF 4C 2E FF 7F FF 7F FD", "(1436509052.250000) can0 1F3#0102"};
+                                          "can0  09F1128F   [8]  FF 4C 2E FF 7F FF 7F FD", "(1436509052.250000) can0 1F3#0102"};
   std::vector<std::string> frames;
   for (const std::string& l : lines) frames.push_back(l + "\n");
   fuzz::IntactFrames intact(data, size, frames, lines);
@@ -46,7 +46,9 @@ void checkIntactLines(const uint8_t* data, size_t size) {
     const char* why = "";
     size_t junk = 0;
     if (i - begin <= 4096 && parseCandumpLineAfterJunk(line, &f, &t, &why, &junk) == CandumpLine::kFrame) {
-      intact.delivered(begin + junk, line.substr(junk));
+      // Blanks before a frame are not junk: the frame is compared from its first character.
+      const size_t lead = std::min(line.find_first_not_of(" \t", junk), line.size());
+      intact.delivered(begin + lead, line.substr(lead));
     }
     begin = i + 1;
   }
