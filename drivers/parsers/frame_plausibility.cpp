@@ -196,9 +196,41 @@ FramePlausibility::Verdict FramePlausibility::checkXsens(const XbusMessage& m, c
       if (!(std::fabs(a) <= M_PI + 1e-6)) return finish(Verdict::kOutOfRange);
     }
   }
+  if (gap > 0 && xsensStepImplausible(d, gap)) return finish(Verdict::kImplausibleStep);
   has_previous_ = d.has_packet_counter;
   counter_ = d.packet_counter;
+  keepXsensValues(d);
   return finish(Verdict::kAccepted);
+}
+
+// Steps from the previous accepted message, `gap` frames of the device's counter ago (PlausibilityLimits).
+bool FramePlausibility::xsensStepImplausible(const XsensMtData2& d, int gap) const {
+  auto step3 = [](const std::array<double, 3>& a, const std::array<double, 3>& b) {
+    return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+  };
+  const double f_limit = limits_.max_specific_force_step_mps2 * gap;
+  const double w_limit = limits_.max_angular_rate_step_radps * gap;
+  if (d.has_acceleration && has_acceleration_ && f_limit > 0 && step3(d.acceleration_mps2, acceleration_mps2_) > f_limit) {
+    return true;
+  }
+  if (d.has_rate_of_turn && has_rate_ && w_limit > 0 && step3(d.rate_of_turn_radps, rate_radps_) > w_limit) return true;
+  if (d.has_quaternion && has_quaternion_ && limits_.max_orientation_step_deg > 0) {
+    // Angle between the two orientations: 2 acos(|q1 . q2|) for unit quaternions (either sign).
+    double dot = 0.0;
+    for (int i = 0; i < 4; ++i) dot += d.quaternion[size_t(i)] * quaternion_[size_t(i)];
+    const double angle_deg = 2.0 * std::acos(std::min(1.0, std::fabs(dot))) * kRadToDeg;
+    if (angle_deg > limits_.max_orientation_step_deg * gap) return true;
+  }
+  return false;
+}
+
+void FramePlausibility::keepXsensValues(const XsensMtData2& d) {
+  has_acceleration_ = d.has_acceleration;
+  has_rate_ = d.has_rate_of_turn;
+  has_quaternion_ = d.has_quaternion;
+  if (d.has_acceleration) acceleration_mps2_ = d.acceleration_mps2;
+  if (d.has_rate_of_turn) rate_radps_ = d.rate_of_turn_radps;
+  if (d.has_quaternion) quaternion_ = d.quaternion;
 }
 
 FramePlausibility::Verdict FramePlausibility::checkNmeaHeading(const Nmea0183HeadingRecord& r) {

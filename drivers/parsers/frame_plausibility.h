@@ -30,6 +30,14 @@ struct PlausibilityLimits {
   double max_angular_rate_radps = 35.0; // IMU gyro (2000 deg/s)
   double max_specific_force_mps2 = 160.0;  // IMU accelerometer (16 g)
   double quaternion_norm_tolerance = 1e-3;
+  // IMU/AHRS steps per frame of the device's counter (an MTi at 100 Hz). A work-class ROV's specific
+  // force changes by under 1 m/s2 in 10 ms (thrusters spin up in tenths of a second; the MTi's output
+  // is the velocity increment over the frame, which averages vibration), its rate by under 0.01 rad/s,
+  // its attitude by under 0.3 deg; a flipped exponent or high mantissa bit in a damaged message whose
+  // 8-bit sum still holds (1 in 256) multiplies a value by 2^k (fault_bit_errors_test). 0: not checked.
+  double max_specific_force_step_mps2 = 4.0;
+  double max_angular_rate_step_radps = 0.2;
+  double max_orientation_step_deg = 2.0;
   int relock_after = 3;                 // consecutive layout mismatches that mean the device was reconfigured;
                                         // consecutive value rejections after which the reference is dropped
 };
@@ -59,6 +67,8 @@ class FramePlausibility {
   Verdict layoutVerdict(const uint8_t* bytes, size_t n, size_t frame_size);
   int gapFromCounter(uint32_t counter, uint32_t modulus);
   Verdict finish(Verdict v);
+  bool xsensStepImplausible(const XsensMtData2& d, int gap) const;
+  void keepXsensValues(const XsensMtData2& d);
 
   PlausibilityLimits limits_;
   std::array<uint8_t, kMaxLocked> locked_{};
@@ -77,6 +87,10 @@ class FramePlausibility {
   double heading_deg_ = 0, pitch_deg_ = 0, roll_deg_ = 0;
   std::array<double, 4> velocity_mps_{};
   std::array<bool, 4> velocity_valid_{};
+  // Xsens: the previous accepted message's IMU values (each only when that message carried it).
+  bool has_acceleration_ = false, has_rate_ = false, has_quaternion_ = false;
+  std::array<double, 3> acceleration_mps2_{}, rate_radps_{};
+  std::array<double, 4> quaternion_{};
 };
 
 }  // namespace deepnav

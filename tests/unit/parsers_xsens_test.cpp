@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "drivers/parsers/frame_plausibility.h"
 #include "drivers/parsers/xbus_framer.h"
 #include "drivers/parsers/xsens_mtdata2.h"
 #include "tests/support/sensor_frames.h"
@@ -68,6 +69,51 @@ TEST(XsensParser, MalformedPacketsAreRejected) {
   const uint8_t unknown[] = {0x70, 0x10, 2, 1, 2};  // unknown XDI: skipped
   EXPECT_TRUE(decodeXsensMtData2(unknown, sizeof unknown, &d, &why));
   EXPECT_EQ(d.num_packets, 1);
+}
+
+}  // namespace
+}  // namespace deepnav
+
+namespace deepnav {
+namespace {
+
+// The plausibility of one MTData2 message after a run of good ones (frame_plausibility.h).
+FramePlausibility::Verdict verdictAfterGoodRun(const float q_last[4], const float acc_last[3], const float gyr_last[3]) {
+  const float q[4] = {1.0f, 0.0f, 0.0f, 0.0f};
+  const float acc[3] = {0.1f, 0.2f, 9.81f}, gyr[3] = {0.01f, -0.02f, 0.03f};
+  FramePlausibility plausible;
+  FramePlausibility::Verdict v = FramePlausibility::Verdict::kAccepted;
+  for (uint16_t c = 0; c < 6; ++c) {
+    const bool last = c == 5;
+    const auto bytes = test::buildMtData2(c, last ? q_last : q, last ? acc_last : acc, last ? gyr_last : gyr);
+    XbusMessage m;
+    XsensMtData2 d;
+    const char* why = "";
+    EXPECT_TRUE(splitXbusFrame(bytes.data(), bytes.size(), &m));
+    EXPECT_TRUE(decodeXsensMtData2(m.payload, m.payload_size, &d, &why)) << why;
+    v = plausible.checkXsens(m, d);
+    if (!last) {
+      EXPECT_EQ(v, FramePlausibility::Verdict::kAccepted);
+    }
+  }
+  return v;
+}
+
+TEST(XsensPlausibility, DamagedValuesWhoseSumHoldsAreRefusedAsSteps) {
+  // GIVEN good messages (at rest, level), then one whose sum holds but a float lost or gained a power of
+  // two (the damage fault_bit_errors_test found passing at a bit error rate of 1e-3)
+  const float q[4] = {1.0f, 0.0f, 0.0f, 0.0f};
+  const float acc[3] = {0.1f, 0.2f, 9.81f}, gyr[3] = {0.01f, -0.02f, 0.03f};
+  const float acc_doubled[3] = {0.1f, 0.2f, 19.62f}, acc_quartered[3] = {0.1f, 0.2f, 2.45f};
+  const float gyr_spike[3] = {0.01f, -0.02f, 0.33f};
+  const double half = 0.5 * 3.0 * M_PI / 180.0;  // a 3 deg roll step in one frame
+  const float q_rolled[4] = {float(std::cos(half)), float(std::sin(half)), 0.0f, 0.0f};
+  // THEN each is refused as an implausible step; the same message without damage passes
+  EXPECT_EQ(verdictAfterGoodRun(q, acc_doubled, gyr), FramePlausibility::Verdict::kImplausibleStep);
+  EXPECT_EQ(verdictAfterGoodRun(q, acc_quartered, gyr), FramePlausibility::Verdict::kImplausibleStep);
+  EXPECT_EQ(verdictAfterGoodRun(q, acc, gyr_spike), FramePlausibility::Verdict::kImplausibleStep);
+  EXPECT_EQ(verdictAfterGoodRun(q_rolled, acc, gyr), FramePlausibility::Verdict::kImplausibleStep);
+  EXPECT_EQ(verdictAfterGoodRun(q, acc, gyr), FramePlausibility::Verdict::kAccepted);
 }
 
 }  // namespace
