@@ -92,6 +92,7 @@ class AravisStereoCamera : public CameraSource {
   void drain(Side& s);
   void handleBuffer(Side& s, ArvBuffer* buffer);
   std::int64_t triggerTickOf(Side& s, TimeUs arrival_us, TimeUs* written_us);
+  bool exposureStartUnknown(const Side& s, TimeUs written_us, TimeUs arrival_us) const;
   void publishTriggerCounts(Side& s);  // with tracker_mutex held
   void finish(const FramePairer::Result& r);
   Held& held(int handle);  // handle = side * kHeld + slot

@@ -44,6 +44,7 @@ CameraSideStatus snapshotSide(const CameraCounters::Side& s) {
   out.trigger_skips = s.trigger_skips.load(std::memory_order_relaxed);
   out.trigger_timeouts = s.trigger_timeouts.load(std::memory_order_relaxed);
   out.unattributed = s.unattributed.load(std::memory_order_relaxed);
+  out.slow_triggers = s.slow_triggers.load(std::memory_order_relaxed);
   out.last_good_frame_us = s.last_good_frame_us.load(std::memory_order_relaxed);
   return out;
 }
@@ -54,6 +55,7 @@ void sideJson(std::ostringstream& o, const CameraSideStatus& s) {
     << ",\"reconnect_failures\":" << s.reconnect_failures << ",\"control_lost\":" << s.control_lost
     << ",\"triggers\":" << s.triggers << ",\"trigger_skips\":" << s.trigger_skips
     << ",\"trigger_timeouts\":" << s.trigger_timeouts << ",\"unattributed\":" << s.unattributed
+    << ",\"slow_triggers\":" << s.slow_triggers
     << ",\"frames\":{";
   bool first = true;
   for (std::size_t i = 0; i < kFrameStatusCount; ++i) {

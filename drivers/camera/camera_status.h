@@ -43,6 +43,7 @@ struct CameraSideStatus {
   std::uint64_t trigger_skips = 0;     // ticks not triggered: the previous trigger unanswered, or resynchronising
   std::uint64_t trigger_timeouts = 0;  // software triggers never answered
   std::uint64_t unattributed = 0;      // frames answering no known software trigger (dropped)
+  std::uint64_t slow_triggers = 0;     // frames whose trigger write left the exposure start unknown (dropped)
   TimeUs last_good_frame_us = 0;  // monotonic time of the last kOk frame (0: none yet)
 
   std::uint64_t bad() const;  // frames with any status but kOk
@@ -75,6 +76,7 @@ class CameraCounters {
     std::atomic<std::uint64_t> trigger_skips{0};
     std::atomic<std::uint64_t> trigger_timeouts{0};
     std::atomic<std::uint64_t> unattributed{0};
+    std::atomic<std::uint64_t> slow_triggers{0};
     std::atomic<TimeUs> last_good_frame_us{0};
 
     void count(CameraFrameStatus s) {
