@@ -75,29 +75,13 @@ XbusFramer::Check XbusFramer::checkAt(size_t at, size_t* frame_bytes, const char
   return Check::kValid;
 }
 
-// Position of the first later message that is complete, checksum-valid and followed by a preamble and
-// bus ID, or 0. The probe stops at a later candidate still incomplete (it may be the first real
-// message) and resumes there on the next call: each held byte is examined once per first preamble.
 size_t XbusFramer::laterValidFrame() {
-  const uint8_t* d = buffer_.data();
-  const size_t size = buffer_.size();
-  for (probe_ = std::max<size_t>(probe_, 1); probe_ + 1 < size; ++probe_) {
-    const void* first = std::memchr(d + probe_, kPreamble, size - 1 - probe_);
-    if (first == nullptr) {
-      probe_ = size - 1;
-      break;
-    }
-    probe_ = size_t(static_cast<const uint8_t*>(first) - d);
-    if (!headerAt(probe_)) continue;
-    size_t bytes = 0;
-    const char* why = "";
-    const Check c = checkAt(probe_, &bytes, &why);
-    if (c == Check::kIncomplete) return 0;
-    if (c == Check::kBad) continue;
-    if (probe_ + bytes + 2 > size) return 0;  // wait for the next preamble and bus ID
-    if (headerAt(probe_ + bytes)) return probe_;
-  }
-  return 0;
+  return deepnav::laterValidFrame(
+      buffer_.data(), buffer_.size(), kPreamble, &probe_, [this](size_t at) { return headerAt(at); },
+      [this](size_t at, size_t* bytes) {
+        const char* why = "";
+        return checkAt(at, bytes, &why);
+      });
 }
 
 // A checksum-valid frame may still be a false header whose checksum happened to hold (1 in 256 for an
@@ -107,22 +91,12 @@ size_t XbusFramer::laterValidFrame() {
 // incomplete (at most one maximal frame); in lock the frame is taken unless the refusal is certain,
 // so the steady state of a live line never waits (a file, waitForCertainty(), always waits). The scan is a memchr over the frame: a few percent of its cost.
 XbusFramer::Overrun XbusFramer::overrunByLaterFrame(size_t frame_bytes) const {
-  bool unknown = false;
-  const uint8_t* d = buffer_.data();
-  for (size_t at = 1; at < frame_bytes; ++at) {
-    const void* first = std::memchr(d + at, kPreamble, frame_bytes - at);
-    if (first == nullptr) break;
-    at = size_t(static_cast<const uint8_t*>(first) - d);
-    if (!headerAt(at)) continue;
-    size_t bytes = 0;
-    const char* why = "";
-    const Check c = checkAt(at, &bytes, &why);
-    if (c == Check::kIncomplete) unknown = unknown || !end_of_input_;
-    if (c != Check::kValid || at + bytes <= frame_bytes) continue;
-    if (headerAt(at + bytes) || (end_of_input_ && at + bytes == buffer_.size())) return Overrun::kYes;
-    unknown = unknown || (!end_of_input_ && at + bytes + 2 > buffer_.size());
-  }
-  return unknown ? Overrun::kNotYetKnown : Overrun::kNo;
+  return deepnav::overrunByLaterFrame(
+      buffer_.data(), buffer_.size(), frame_bytes, kPreamble, end_of_input_, [this](size_t at) { return headerAt(at); },
+      [this](size_t at, size_t* bytes) {
+        const char* why = "";
+        return checkAt(at, bytes, &why);
+      });
 }
 
 FrameStatus XbusFramer::next(RawFrame* frame, FrameError* error) {

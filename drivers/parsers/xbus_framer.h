@@ -3,6 +3,7 @@
 #include <cstdint>
 
 #include "drivers/parsers/frame_result.h"
+#include "drivers/parsers/later_frame_scan.h"
 #include "drivers/parsers/stream_buffer.h"
 
 namespace deepnav {
@@ -28,12 +29,12 @@ class XbusFramer {
   FrameStatus next(RawFrame* frame, FrameError* error);
 
  private:
-  enum class Check { kBad, kIncomplete, kValid };
+  using Check = FrameCheck;
   // The candidate message whose preamble is `at` bytes into the buffer.
   Check checkAt(size_t at, size_t* frame_bytes, const char** reason) const;
   bool headerAt(size_t at) const;
   size_t laterValidFrame();
-  enum class Overrun { kNo, kYes, kNotYetKnown };
+  using Overrun = FrameOverrun;
   Overrun overrunByLaterFrame(size_t frame_bytes) const;
   void flushPending();
   FrameStatus skip(size_t n, const char* reason, FrameError* error);
