@@ -111,4 +111,24 @@ struct Odometry {
   TwistWithCovariance twist;
 };
 
+struct TwistStamped {  // geometry_msgs/msg/TwistStamped (DVL velocity without covariance)
+  static constexpr std::string_view kTypeName = "geometry_msgs/msg/TwistStamped";
+  Header header;
+  Twist twist;
+};
+
+struct CompressedImage {
+  static constexpr std::string_view kTypeName = "sensor_msgs/msg/CompressedImage";
+  Header header;
+  std::string format;  // "jpeg", "png", or image_transport's "mono8; jpeg compressed mono8"
+  std::vector<uint8_t> data;
+};
+
+struct MagneticField {
+  static constexpr std::string_view kTypeName = "sensor_msgs/msg/MagneticField";
+  Header header;
+  Vector3 magnetic_field;  // tesla
+  std::array<double, 9> magnetic_field_covariance{};  // [0] = 0: unknown
+};
+
 }  // namespace deepnav::ros
