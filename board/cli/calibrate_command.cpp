@@ -16,6 +16,7 @@
 #include "board/config/yaml_document.h"
 #include "drivers/replay/recording_reader.h"
 #include "vision/calib/stereo_charuco_calibration.h"
+#include "vision/calib/stereo_checkerboard_calibration.h"
 
 namespace deepnav {
 namespace {
@@ -42,6 +43,23 @@ const std::array kTargetParams = {
     P{"duplicate_px", ParamType::kDouble, "px", 0.0, 100.0, "4.0", "",
       "views whose corners moved less than this from a kept view are duplicates", DEEPNAV_FIELD(duplicate_px)},
     P{"fix_k3", ParamType::kBool, "-", 0, 0, "true", "", "estimate k1 k2 p1 p2 only", DEEPNAV_FIELD(fix_k3)},
+};
+
+#undef DEEPNAV_FIELD
+
+using C = ParamSpec<CheckerboardTarget>;
+
+#define DEEPNAV_FIELD(expr) [](CheckerboardTarget& t) -> void* { return &t.expr; }
+
+// inner_corners ([cols, rows]) is read apart: a pair of integers has no ParamType.
+const std::array kCheckerboardParams = {
+    C{"square_m", ParamType::kDouble, "m", 0.001, 1.0, "0.025", "", "side of a printed square, as measured",
+      DEEPNAV_FIELD(square_m)},
+    C{"max_edge_width_px", ParamType::kDouble, "px", 1.0, 50.0, "3.5", "", "views with wider edges are blurred",
+      DEEPNAV_FIELD(max_edge_width_px)},
+    C{"duplicate_px", ParamType::kDouble, "px", 0.0, 100.0, "4.0", "",
+      "views whose corners moved less than this from a kept view are duplicates", DEEPNAV_FIELD(duplicate_px)},
+    C{"fix_k3", ParamType::kBool, "-", 0, 0, "true", "", "estimate k1 k2 p1 p2 only", DEEPNAV_FIELD(fix_k3)},
 };
 
 #undef DEEPNAV_FIELD
@@ -151,7 +169,7 @@ bool collectPairs(const CalibrateCommandOptions& o, std::vector<CalibrationPairI
   return true;
 }
 
-void printPairReports(const StereoCharucoResult& r) {
+void printPairReports(const StereoCalibrationResult& r) {
   std::printf("%-28s %-8s %7s %7s %7s %11s %13s  %s\n", "pair", "status", "left", "right", "common", "edge (px)",
               "rms L/R (px)", "reason");
   for (const auto& p : r.pairs) {
@@ -191,15 +209,21 @@ void printCameraInfo(const StereoCalibration& c) {
 
 }  // namespace
 
-bool loadCharucoTarget(const std::string& path, CharucoTarget* target, std::string* error) {
+namespace {
+
+bool readTargetRoot(const std::string& path, YAML::Node* root, std::string* error) {
   std::string text;
   if (!readTextFile(path, "the calibration target", &text, error)) return false;
-  YAML::Node root;
-  if (!parseYamlDocument(text, path, &root, error)) return false;
-  if (!root.IsMap()) {
-    *error = path + ": expected a map of keys (squares_x, squares_y, square_m, marker_m, dictionary, ...)";
+  if (!parseYamlDocument(text, path, root, error)) return false;
+  if (!root->IsMap()) {
+    *error = path + ": expected a map of keys (type, and squares_x, squares_y, square_m, marker_m, dictionary for "
+                    "ChArUco or inner_corners, square_m for a checkerboard)";
     return false;
   }
+  return true;
+}
+
+bool applyCharucoTarget(const YAML::Node& root, const std::string& path, CharucoTarget* target, std::string* error) {
   for (const char* key : kRequiredKeys) {
     if (!root[key]) {
       *error = path + ": key '" + key + "' is missing; the target's geometry must be given (measure the print)";
@@ -217,10 +241,98 @@ bool loadCharucoTarget(const std::string& path, CharucoTarget* target, std::stri
   return true;
 }
 
+bool readInnerCorners(const YAML::Node& node, const std::string& path, CheckerboardTarget* t, std::string* error) {
+  const std::string bad = path + ": key 'inner_corners' must be [cols, rows]: the inner corners (where four squares "
+                                 "meet) along a row and along a column, integers from 3 to 100";
+  if (!node.IsSequence() || node.size() != 2) {
+    *error = bad;
+    return false;
+  }
+  int counts[2] = {0, 0};
+  for (std::size_t i = 0; i < 2; ++i) {
+    try {
+      counts[i] = node[i].as<int>();
+    } catch (const YAML::Exception&) {
+      *error = bad;
+      return false;
+    }
+    if (counts[i] < 3 || counts[i] > 100) {
+      *error = bad;
+      return false;
+    }
+  }
+  t->inner_cols = counts[0];
+  t->inner_rows = counts[1];
+  return true;
+}
+
+bool applyCheckerboardTarget(YAML::Node root, const std::string& path, CheckerboardTarget* target,
+                             std::string* error) {
+  for (const char* key : {"inner_corners", "square_m"}) {
+    if (!root[key]) {
+      *error = path + ": key '" + key + "' is missing; a checkerboard target needs inner_corners: [cols, rows] and "
+                                        "square_m (measure the print)";
+      return false;
+    }
+  }
+  CheckerboardTarget t;
+  if (!readInnerCorners(root["inner_corners"], path, &t, error)) return false;
+  root.remove("inner_corners");
+  if (!applyParams(bindParams(kCheckerboardParams, t), root, path, error)) return false;
+  std::string why;
+  if (!validateCheckerboardTarget(t, &why)) {
+    *error = path + ": " + why;
+    return false;
+  }
+  *target = t;
+  return true;
+}
+
+std::string describeTarget(const CalibrationTargetFile& f) {
+  char text[200];
+  if (f.type == "checkerboard") {
+    const CheckerboardTarget& t = f.checkerboard;
+    std::snprintf(text, sizeof text, "checkerboard %d x %d inner corners, square %.4f m", t.inner_cols, t.inner_rows,
+                  t.square_m);
+  } else {
+    const CharucoTarget& t = f.charuco;
+    std::snprintf(text, sizeof text, "ChArUco %d x %d, square %.4f m, marker %.4f m, %s", t.squares_x, t.squares_y,
+                  t.square_m, t.marker_m, t.dictionary.c_str());
+  }
+  return text;
+}
+
+}  // namespace
+
+bool loadCharucoTarget(const std::string& path, CharucoTarget* target, std::string* error) {
+  YAML::Node root;
+  return readTargetRoot(path, &root, error) && applyCharucoTarget(root, path, target, error);
+}
+
+bool loadCalibrationTarget(const std::string& path, CalibrationTargetFile* target, std::string* error) {
+  YAML::Node root;
+  if (!readTargetRoot(path, &root, error)) return false;
+  CalibrationTargetFile out;
+  if (root["type"]) {
+    const YAML::Node type = root["type"];
+    out.type = type.IsScalar() ? type.Scalar() : "";
+    if (out.type != "charuco" && out.type != "checkerboard") {
+      *error = path + ": key 'type' must be charuco or checkerboard";
+      return false;
+    }
+    root.remove("type");
+  }
+  const bool ok = out.type == "checkerboard" ? applyCheckerboardTarget(root, path, &out.checkerboard, error)
+                                             : applyCharucoTarget(root, path, &out.charuco, error);
+  if (!ok) return false;
+  *target = out;
+  return true;
+}
+
 int runCalibrateCommand(const CalibrateCommandOptions& o) {
-  CharucoTarget target;
+  CalibrationTargetFile target;
   std::string error;
-  if (!loadCharucoTarget(o.target_path, &target, &error)) {
+  if (!loadCalibrationTarget(o.target_path, &target, &error)) {
     std::fprintf(stderr, "deepnav calibrate: %s\n", error.c_str());
     return 2;
   }
@@ -229,8 +341,9 @@ int runCalibrateCommand(const CalibrateCommandOptions& o) {
     std::fprintf(stderr, "deepnav calibrate: %s\n", error.c_str());
     return 2;
   }
-  StereoCharucoResult result;
-  const bool ok = calibrateStereoCharuco(pairs, target, &result, &error);
+  StereoCalibrationResult result;
+  const bool ok = target.type == "checkerboard" ? calibrateStereoCheckerboard(pairs, target.checkerboard, &result, &error)
+                                                : calibrateStereoCharuco(pairs, target.charuco, &result, &error);
   printPairReports(result);
   if (!ok) {
     std::fprintf(stderr, "deepnav calibrate: %s\n", error.c_str());
@@ -244,10 +357,7 @@ int runCalibrateCommand(const CalibrateCommandOptions& o) {
   StereoCalibrationInfo info;
   info.rms_px = result.rms_px;
   info.pairs_used = result.pairs_used;
-  char description[200];
-  std::snprintf(description, sizeof description, "ChArUco %d x %d, square %.4f m, marker %.4f m, %s", target.squares_x,
-                target.squares_y, target.square_m, target.marker_m, target.dictionary.c_str());
-  info.target = description;
+  info.target = describeTarget(target);
   if (!writeStereoCalibrationFile(o.out_path, c, info, &error)) {
     std::fprintf(stderr, "deepnav calibrate: %s\n", error.c_str());
     return 2;

@@ -3,15 +3,12 @@
 
 #include <opencv2/aruco/charuco.hpp>
 
+#include "vision/calib/target_view.h"
+
 namespace deepnav {
 
-// The ChArUco corners found in one image.
-struct CharucoView {
-  std::vector<cv::Point2f> corners_px;
-  std::vector<int> ids;          // chessboard corner ids, ascending
-  int markers = 0;               // ArUco markers detected
-  double edge_width_px = 0.0;    // blur measure of the board region (see measureEdgeWidth); 0 if no board
-};
+// The ChArUco corners found in one image (a TargetView whose ids are the board's chessboard corner ids).
+using CharucoView = TargetView;
 
 // detectMarkers + interpolateCornersCharuco (OpenCV 4.6 aruco) on a grey image; ids sorted ascending.
 // An image without the board gives an empty view (not an error).
