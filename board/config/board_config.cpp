@@ -177,6 +177,10 @@ const std::array kBoardParams = {
     P{"stage.fuse_markers_in_stage2", ParamType::kBool, "-", 0, 0, "true", "",
       "fuse marker robot poses in stage 2 (false: the paper's T_L3, VO and navigation sensors only)",
       DEEPNAV_FIELD(stage.fuse_markers_in_stage2)},
+    P{"stage.stage2_without_panel", ParamType::kBool, "-", 0, 0, "false", "",
+      "a run without a panel (marker-less rig, e.g. board/euroc) enters stage 2 (VO fused) once the filter is aligned "
+      "(false: it stays in stage 1 and no VO is fused)",
+      DEEPNAV_FIELD(stage.stage2_without_panel)},
     P{"vision.vo_mode", ParamType::kChoice, "-", 0, 0, "adaptive", "adaptive|all|orb|planes|none",
       "stage-2 visual odometry: adaptive (paper), all (both fused), orb, planes, none (T_L1)",
       DEEPNAV_FIELD(vision.vo_mode)},
@@ -429,6 +433,14 @@ const std::array kBoardParams = {
       DEEPNAV_FIELD(ekf.history_meas_capacity)},
     P{"ekf.align_imu_samples", ParamType::kInt, "samples", 1, 1000, "20", "", "IMU samples averaged for the initial roll/pitch",
       DEEPNAV_FIELD(ekf.align_imu_samples)},
+    P{"ekf.align_imu_only", ParamType::kBool, "-", 0, 0, "false", "",
+      "align from the IMU alone, yaw 0 and z 0 at the start, for a vehicle with no compass and no depth sensor "
+      "(false: the alignment waits for both)",
+      DEEPNAV_FIELD(ekf.align_imu_only)},
+    P{"ekf.align_gyro_bias_at_rest", ParamType::kBool, "-", 0, 0, "false", "",
+      "the robot is at rest while aligning: the mean rate over the alignment samples is the initial gyro bias "
+      "(false: it starts at 0)",
+      DEEPNAV_FIELD(ekf.align_gyro_bias_at_rest)},
     P{"ekf.stuck_after_samples", ParamType::kInt, "samples", 0, 1000, "5", "", "a DVL, depth, compass or AHRS sample bit-identical to the previous n-1 is refused as frozen (0: off; else >= 2)",
       DEEPNAV_FIELD(ekf.stuck_after_samples)},
     P{"ekf.imu_stuck_after_samples", ParamType::kInt, "samples", 0, 100000, "10", "", "an IMU sample bit-identical (rates and specific force) to the previous n-1 is refused as frozen and the state coasts (0: off; else >= 2)",

@@ -81,6 +81,7 @@ struct BoardConfig {
     double min_workspace_time_s;
     double min_faces_seen_fraction;
     bool fuse_markers_in_stage2;  // false: the paper's T_L3 (stage 2 on VO and nav sensors alone)
+    bool stage2_without_panel;    // no panel: stage 2 (VO) once aligned (a marker-less rig)
   } stage;
   struct Vision {                 // the vision worker (vision/pipeline/vision_pipeline.h)
     std::string vo_mode;          // adaptive | all | orb | planes | none

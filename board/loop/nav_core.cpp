@@ -53,6 +53,7 @@ bool NavCore::init(const VehicleSetup& setup, RecordSink* sink, std::string* err
   StageConfig stage;
   stage.min_workspace_time_s = c.stage.min_workspace_time_s;
   stage.min_faces_seen_fraction = c.stage.min_faces_seen_fraction;
+  stage.stage2_without_panel = c.stage.stage2_without_panel;
   if (!stage_.init(stage, error) || !ekf_.init(c.ekf, error)) return false;
   if (!has_panel_) return true;
   if (!markers_.init(setup.panel, robotFromCamera(setup), panelPoseConfig(c), markerCovarianceConfig(c), error)) {
@@ -141,6 +142,7 @@ const NavSolution& NavCore::tick(TimeUs t_us) {
   in.map_ready = map_ready_;
   in.workspace_restored = workspace_restored_;
   in.faces_seen_fraction = has_panel_ ? markers_.facesSeenFraction() : 0.0;
+  in.has_panel = has_panel_;
   solution_.stage = stage_.update(t_us, in);
   if (in.panel_fixed) solution_.status |= kStatusPanelFixed;
   feedback_.t_us = t_us;

@@ -163,9 +163,9 @@ void Ekf::alignFromImu(const ImuSample& sample) {
   alignment_.addImu(u, sample.t_us);
   last_imu_t_us_ = sample.t_us;
   has_last_imu_ = true;
-  if (!alignment_.ready(config_.align_imu_samples)) return;
+  if (!alignment_.ready(config_.align_imu_samples, config_.align_imu_only)) return;
   state_.t_us = sample.t_us;
-  state_.x = alignment_.compute(config_.p_depth_in_robot_m);
+  state_.x = alignment_.compute(config_.p_depth_in_robot_m, config_.align_gyro_bias_at_rest);
   resetCovariance(config_, &state_);
   startHistory(sample);
 }

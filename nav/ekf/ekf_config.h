@@ -139,6 +139,12 @@ struct EkfConfig {
 
   // --- Initial alignment ----------------------------------------------------------------------------
   int align_imu_samples = 20;          // IMU samples averaged for roll/pitch from gravity, >= 1
+  // A vehicle with no compass and no depth sensor (a MAV dataset): align from the IMU alone, yaw 0 and
+  // z 0 at the start unless a compass or depth sample came first. Off: alignment waits for both.
+  bool align_imu_only = false;
+  // The robot is at rest while aligning: the mean rate over those samples is the initial gyro bias
+  // (Earth's 7.3e-5 rad/s included). Off: the bias starts at 0.
+  bool align_gyro_bias_at_rest = false;
 };
 
 // Checks every field; on failure writes a message naming the key and returns false.

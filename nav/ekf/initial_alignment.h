@@ -16,12 +16,14 @@ class InitialAlignment {
   void addImu(const RobotImu& u, TimeUs t_us);
   void setYaw(double yaw_rad) { yaw_rad_ = yaw_rad; has_yaw_ = true; }
   void setDepth(double depth_m) { depth_m_ = depth_m; has_depth_ = true; }
-  bool ready(int imu_samples_required) const;
+  // imu_only: neither the compass's yaw nor the depth is waited for (EkfConfig::align_imu_only).
+  bool ready(int imu_samples_required, bool imu_only = false) const;
   TimeUs lastImuTime() const { return last_imu_t_us_; }
   Eigen::Vector3d meanRate() const { return sum_w_ / static_cast<double>(count_); }
 
-  // The aligned nominal state; p_depth_in_robot_m is the pressure port lever arm.
-  NominalState compute(const Eigen::Vector3d& p_depth_in_robot_m) const;
+  // The aligned nominal state; p_depth_in_robot_m is the pressure port lever arm; gyro_bias_at_rest: the
+  // mean rate is the gyro bias (EkfConfig::align_gyro_bias_at_rest).
+  NominalState compute(const Eigen::Vector3d& p_depth_in_robot_m, bool gyro_bias_at_rest = false) const;
 
  private:
   Eigen::Vector3d sum_f_ = Eigen::Vector3d::Zero();

@@ -10,6 +10,9 @@ namespace deepnav {
 struct StageConfig {
   double min_workspace_time_s = 30.0;    // time spent in stage 1 before stage 2, [0, 86400] s
   double min_faces_seen_fraction = 0.5;  // fraction of the panel's faces seen in stage 1, [0, 1]
+  // A run without a panel (a marker-less rig) goes to stage 2 as soon as the filter is aligned: VO and
+  // the navigation sensors alone, no workspace map. Off: without a panel the run stays in stage 1.
+  bool stage2_without_panel = false;
 };
 
 // False with a message naming the key when a field is out of range.

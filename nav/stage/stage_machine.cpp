@@ -28,6 +28,7 @@ bool StageMachine::workspaceCriteriaMet(const StageInputs& in) const {
 
 NavStage StageMachine::next(const StageInputs& in) const {
   if (!in.filter_aligned) return NavStage::kInit;
+  if (config_.stage2_without_panel && !in.has_panel) return NavStage::kOptimised;
   switch (stage_) {
     case NavStage::kInit:
       if (in.workspace_restored && in.panel_fixed && in.map_ready) return NavStage::kOptimised;

@@ -15,6 +15,7 @@ struct StageInputs {
   bool map_ready = false;            // the workspace map is usable (decided by the map's owner)
   bool workspace_restored = false;   // panel pose and map were loaded from a saved workspace
   double faces_seen_fraction = 0.0;  // fraction of the panel's faces seen so far, [0, 1]
+  bool has_panel = true;             // the run has a panel description (StageConfig::stage2_without_panel)
 };
 
 // The two-stage method as a state machine:
