@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 namespace deepnav {
@@ -55,9 +56,13 @@ bool equidistantToRational(const cv::Matx33d& K, const cv::Vec4d& k, cv::Size si
   }
   fit->max_angle_deg = widest_theta * 180.0 / kPi;
   if (widest_theta >= 89.0 * kPi / 180.0) {
-    if (error)
-      *error = "the image reaches " + std::to_string(fit->max_angle_deg) +
-               " deg from the axis: no pinhole rectification can hold it (fisheye beyond 178 deg)";
+    if (error) {
+      char text[160];
+      std::snprintf(text, sizeof text,
+                    "the image corners lie %.1f deg from the axis; a pinhole rectification holds rays under 89 deg only",
+                    fit->max_angle_deg);
+      *error = text;
+    }
     return false;
   }
   const double r_max = std::tan(widest_theta);

@@ -18,8 +18,8 @@ struct EquidistantFit {
   double max_angle_deg = 0.0; // widest ray angle from the axis within the image
 };
 
-// False with a reason when the image reaches 89 deg from the axis or beyond (no pinhole rectification holds
-// it), or the fitted model is not monotonic over the image. fit->max_error_px is for the caller to judge.
+// False with a reason when the image corners reach 89 deg from the axis or beyond (no pinhole rectification
+// holds them), or the fitted model is not monotonic over the image. fit->max_error_px is for the caller to judge.
 bool equidistantToRational(const cv::Matx33d& K, const cv::Vec4d& k, cv::Size image_size, EquidistantFit* fit,
                            std::string* error);
 
