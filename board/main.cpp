@@ -7,6 +7,8 @@
 
 #include "board/cli/calibrate_command.h"
 #include "board/cli/decode_command.h"
+#include "board/cli/import_calibration_command.h"
+#include "board/cli/import_euroc_command.h"
 #include "board/cli/stereo_command.h"
 #include "board/config/board_config.h"
 #include "board/config/vehicle_setup.h"
@@ -78,7 +80,12 @@ int main(int argc, char** argv) {
   deepnav::ReplayOptions replay;
   bool realtime = false;
   auto* rp = app.add_subcommand("replay", "replay a recording through the nav loop (bench)");
-  rp->add_option("recording", replay.input_path, "MCAP recording")->required()->check(CLI::ExistingFile);
+  rp->add_option("recording", replay.input_path, "MCAP recording (with --topics: a ROS 2 MCAP or ROS 1 bag)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  rp->add_option("--topics", replay.topics_path,
+                 "topic map of a foreign recording: which topic feeds which sensor (docs/foreign-recordings.md)")
+      ->check(CLI::ExistingFile);
   rp->add_option("--out", replay.out_dir, "output directory")->required();
   rp->add_option("--board", replay.board_path, "board file (default: the board stored in the recording)")
       ->check(CLI::ExistingFile);
@@ -124,7 +131,7 @@ int main(int argc, char** argv) {
   rn->add_flag("--validate", validate_only, "validate the board (files, devices, outputs) and exit");
 
   deepnav::CalibrateCommandOptions calibrate;
-  auto* cb = app.add_subcommand("calibrate", "stereo calibration from ChArUco views (images or a recording)");
+  auto* cb = app.add_subcommand("calibrate", "stereo calibration from ChArUco or checkerboard views (images or a recording)");
   cb->add_option("--target", calibrate.target_path, "target.yaml (vision/calib/README.md)")
       ->required()
       ->check(CLI::ExistingFile);
@@ -140,6 +147,34 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"pd0", "pd6", "wl-a50", "nmea0183", "n2k-candump", "xsens"}));
   dc->add_option("file", decode_path, "capture file")->required()->check(CLI::ExistingFile);
 
+  // `deepnav import <format>`: foreign data into deepnav's own files (recordings, calibrations).
+  auto* im = app.add_subcommand("import", "convert foreign data (datasets, calibrations) into deepnav's files");
+  im->require_subcommand(1);
+  deepnav::ImportEurocOptions import_euroc;
+  auto* ie = im->add_subcommand("euroc", "an EuRoC/ASL folder (mav0/cam0, cam1, imu0) into a deepnav recording");
+  ie->add_option("dir", import_euroc.dir, "dataset folder (holding mav0/)")->required()->check(CLI::ExistingDirectory);
+  ie->add_option("--out", import_euroc.out_path, "recording to write (.mcap)")->required();
+  ie->add_option("--calibration-out", import_euroc.calibration_out,
+                 "also write the stereo calibration (OpenCV YAML, for camera.calibration_file)");
+  ie->add_option("--board", import_euroc.board_path, "board stored in the recording (replay then needs no --board)")
+      ->check(CLI::ExistingFile);
+  ie->add_flag("--skip-missing-images", import_euroc.skip_missing_images,
+               "leave out images listed in data.csv whose file is missing (a folder cut short), counted");
+  ie->add_option("--duration", import_euroc.duration_s, "import only the first N seconds")->check(CLI::PositiveNumber);
+  deepnav::ImportCalibrationOptions import_calibration;
+  auto* ic = im->add_subcommand("calibration", "a Kalibr, OpenCV stereo_calib or ROS camera_info stereo calibration "
+                                               "into deepnav's calibration file (camera.calibration_file)");
+  ic->add_option("--format", import_calibration.format, "kalibr | opencv | camera-info")
+      ->required()
+      ->check(CLI::IsMember({"kalibr", "opencv", "camera-info"}));
+  ic->add_option("files", import_calibration.inputs,
+                 "kalibr: camchain.yaml; opencv: intrinsics.yml extrinsics.yml (or one file); camera-info: left.yaml "
+                 "right.yaml")
+      ->required()
+      ->check(CLI::ExistingFile);
+  ic->add_option("--out", import_calibration.out_path, "calibration file to write (OpenCV YAML)")->required();
+  ic->add_option("--image-size", import_calibration.image_size, "opencv: WIDTHxHEIGHT when the files hold none");
+
   CLI11_PARSE(app, argc, argv);
   // A library exception that a command lets through (OpenCV asserting on an argument, out of memory) ends
   // it with the command's name and the message, exit code 1, never an abort.
@@ -149,6 +184,8 @@ int main(int argc, char** argv) {
       return runReplay(replay);
     }
     if (*rn) return deepnav::runServiceCommand(run, validate_only);
+    if (*ie) return deepnav::runImportEurocCommand(import_euroc);
+    if (*ic) return deepnav::runImportCalibrationCommand(import_calibration);
     if (*dc) return deepnav::runDecodeCommand(decode_format, decode_path);
     if (*iq) return runIqa(iqa_path);
     if (*st) return deepnav::runStereoCommand(stereo);

@@ -1,5 +1,6 @@
 #include "board/replay/bench_replay.h"
 #include "board/replay/fusion_csv.h"
+#include "board/replay/foreign_replay.h"
 
 #include "board/config/recording_options.h"
 #include "board/config/text_file.h"
@@ -93,7 +94,8 @@ void noteFrameTruth(BenchRun* run, const FrameTruth& t) {
   run->summary->frame_truth.push_back({t.t_us, T});
 }
 
-bool initRun(const ReplayOptions& o, const RecordingReader& reader, BenchRun* run, std::string* error) {
+bool initRun(const ReplayOptions& o, const ReplayEventSource& reader, const ReplayMetadata& metadata, BenchRun* run,
+             std::string* error) {
   if (!loadReplaySetup(o.board_path, reader, o.input_path, &run->setup, error) ||
       !applyBoardOverrides(o.overrides, &run->setup, error)) {
     return false;
@@ -111,6 +113,7 @@ bool initRun(const ReplayOptions& o, const RecordingReader& reader, BenchRun* ru
   ro.record_images = o.record_images;
   if (!run->writer.open(o.out_dir + "/replay.mcap", ro, error)) return false;
   for (const auto& [name, values] : recordingMetadata(run->setup)) run->writer.recordMetadata(name, values);
+  for (const auto& [name, values] : metadata) run->writer.recordMetadata(name, values);
   // The simulator's record (with the true panel pose) travels with the run, so that a replay of the
   // replay still scores against it.
   if (const auto* sim = reader.metadata(kTruthPanelMetadata)) run->writer.recordMetadata(kTruthPanelMetadata, *sim);
@@ -355,7 +358,7 @@ void computeReplayMetrics(ReplaySummary* s) {
 
 // A recording with nothing to replay (cut off within its first records, or empty) is an error, not an
 // empty result: the message names the file and, when it is cut off, where.
-std::string replayNoDataError(const std::string& path, const RecordingReader& reader) {
+std::string replayNoDataError(const std::string& path, const ReplayEventSource& reader) {
   std::string why = path + ": holds no data to replay";
   if (!reader.truncated()) return why + " (no sensor sample, stereo pair or solution)";
   why += ": the file is truncated";
@@ -363,7 +366,7 @@ std::string replayNoDataError(const std::string& path, const RecordingReader& re
   return why;
 }
 
-bool loadReplaySetup(const std::string& board_path, const RecordingReader& reader, const std::string& recording,
+bool loadReplaySetup(const std::string& board_path, const ReplayEventSource& reader, const std::string& recording,
                      VehicleSetup* setup, std::string* error) {
   if (!board_path.empty()) return loadVehicleSetup(board_path, setup, error);
   bool found = false;
@@ -379,14 +382,21 @@ bool loadReplaySetup(const std::string& board_path, const RecordingReader& reade
 }
 
 bool runBenchReplay(const ReplayOptions& o, ReplaySummary* summary, std::string* error) {
-  *summary = ReplaySummary{};
+  if (!o.topics_path.empty()) return runForeignBenchReplay(o, summary, error);
   RecordingReader reader;
   if (!reader.open(o.input_path, error)) return false;
   reader.setDeliverFrameTruth(true);  // VO consistency (vo_consistency.h); the loop never sees it
+  return runBenchReplayFrom(o, reader, nullptr, {}, summary, error);
+}
+
+bool runBenchReplayFrom(const ReplayOptions& o, ReplayEventSource& reader, const ReplayPrepare& prepare,
+                        const ReplayMetadata& metadata, ReplaySummary* summary, std::string* error) {
+  *summary = ReplaySummary{};
   auto run = std::make_unique<BenchRun>();
   run->summary = summary;
   run->tap = o.tap;
-  if (!initRun(o, reader, run.get(), error)) return false;
+  if (!initRun(o, reader, metadata, run.get(), error)) return false;
+  if (prepare && !prepare(run->setup, error)) return false;
   summary->reproduce = reader.hasSolutions() && !o.rerun;
   std::string panel_error;
   summary->truth_T_odom_panel = o.truth_T_odom_panel;

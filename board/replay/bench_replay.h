@@ -1,5 +1,8 @@
 #pragma once
 #include <cstdint>
+#include <functional>
+#include <map>
+#include <utility>
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,6 +25,7 @@ namespace deepnav {
 
 struct ReplayOptions {
   std::string input_path;
+  std::string topics_path;       // a foreign recording (ROS 1 bag, ROS 2 MCAP) read through this topic map
   std::string out_dir;           // replay.mcap, trajectory.tum, truth.tum, summary.json
   std::string board_path;        // empty: the board stored in the recording, else the built-in defaults
   bool rerun = false;            // re-run vision and ticks from the sensors even if outputs are recorded
@@ -100,15 +104,24 @@ struct ReplaySummary {
 //  - a raw sensor log (e.g. from the simulator): ticks at the loop rate on the recording's clock, vision
 //    run on each stereo pair and its result fused once `loop.vision_latency_ms` has passed.
 // Writes the outputs to options.out_dir. False with a message naming the file on error.
+// With options.topics_path, input_path is a foreign recording converted through the topic map
+// (foreign_replay.h).
 bool runBenchReplay(const ReplayOptions& options, ReplaySummary* summary, std::string* error);
+
+// The same over any event source (opened by the caller). `prepare`, if set, runs once the setup is loaded
+// (board, overrides), before the first event; `metadata` goes into the output recording with the setup's.
+using ReplayPrepare = std::function<bool(const VehicleSetup& setup, std::string* error)>;
+using ReplayMetadata = std::vector<std::pair<std::string, std::map<std::string, std::string>>>;
+bool runBenchReplayFrom(const ReplayOptions& options, ReplayEventSource& source, const ReplayPrepare& prepare,
+                        const ReplayMetadata& metadata, ReplaySummary* summary, std::string* error);
 
 // The setup a replay runs with: board_path (and the panel file it names) if given, else the board and
 // panel stored in the recording, else the built-in defaults without a panel.
-bool loadReplaySetup(const std::string& board_path, const RecordingReader& reader, const std::string& recording,
+bool loadReplaySetup(const std::string& board_path, const ReplayEventSource& reader, const std::string& recording,
                      VehicleSetup* setup, std::string* error);
 
 // "<path>: holds no data to replay", and whether and where the file is cut off (reader.truncated()).
-std::string replayNoDataError(const std::string& path, const RecordingReader& reader);
+std::string replayNoDataError(const std::string& path, const ReplayEventSource& reader);
 
 // Fills errors, smoothness and metrics from estimate, ticks and truth.
 void computeReplayMetrics(ReplaySummary* summary);

@@ -31,6 +31,10 @@ const MsgDefinitions& standardDefinitions() {
        "uint8 is_bigendian\nuint32 step\n\nuint8[] data\n"},
       {"sensor_msgs/FluidPressure",
        "std_msgs/Header header\n\nfloat64 fluid_pressure\nfloat64 variance\n"},
+      {"geometry_msgs/TwistStamped", "std_msgs/Header header\nTwist twist\n"},
+      {"sensor_msgs/CompressedImage", "std_msgs/Header header\n\nstring format\n\nuint8[] data\n"},
+      {"sensor_msgs/MagneticField",
+       "std_msgs/Header header\n\ngeometry_msgs/Vector3 magnetic_field\n\nfloat64[9] magnetic_field_covariance\n"},
       {"nav_msgs/Odometry",
        "std_msgs/Header header\nstring child_frame_id\n"
        "geometry_msgs/PoseWithCovariance pose\ngeometry_msgs/TwistWithCovariance twist\n"},

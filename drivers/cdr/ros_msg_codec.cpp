@@ -100,6 +100,23 @@ void encodeFields(CdrWriter& w, const Odometry& m) {
   encodeFields(w, m.twist);
 }
 
+void encodeFields(CdrWriter& w, const TwistStamped& m) {
+  encodeFields(w, m.header);
+  encodeFields(w, m.twist);
+}
+
+void encodeFields(CdrWriter& w, const CompressedImage& m) {
+  encodeFields(w, m.header);
+  w.string(m.format);
+  w.u8Sequence(m.data.data(), m.data.size());
+}
+
+void encodeFields(CdrWriter& w, const MagneticField& m) {
+  encodeFields(w, m.header);
+  encodeFields(w, m.magnetic_field);
+  w.f64Array(m.magnetic_field_covariance.data(), m.magnetic_field_covariance.size());
+}
+
 // Decoding ------------------------------------------------------------------------------------
 
 bool decodeFields(CdrReader& r, Time* m) { return r.i32(&m->sec) && r.u32(&m->nanosec); }
@@ -165,6 +182,23 @@ bool decodeFields(CdrReader& r, FluidPressure* m) {
 bool decodeFields(CdrReader& r, Odometry* m) {
   return decodeFields(r, &m->header) && r.string(&m->child_frame_id) && decodeFields(r, &m->pose) &&
          decodeFields(r, &m->twist);
+}
+
+bool decodeFields(CdrReader& r, TwistStamped* m) {
+  return decodeFields(r, &m->header) && decodeFields(r, &m->twist);
+}
+
+bool decodeFields(CdrReader& r, CompressedImage* m) {
+  const uint8_t* bytes = nullptr;
+  size_t size = 0;
+  if (!decodeFields(r, &m->header) || !r.string(&m->format) || !r.u8SequenceView(&bytes, &size)) return false;
+  m->data.assign(bytes, bytes + size);
+  return true;
+}
+
+bool decodeFields(CdrReader& r, MagneticField* m) {
+  return decodeFields(r, &m->header) && decodeFields(r, &m->magnetic_field) &&
+         r.f64Array(m->magnetic_field_covariance.data(), m->magnetic_field_covariance.size());
 }
 
 }  // namespace deepnav::ros

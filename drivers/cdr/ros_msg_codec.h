@@ -30,6 +30,9 @@ void encodeFields(cdr::CdrWriter& w, const Image& m);
 void encodeFields(cdr::CdrWriter& w, const ImageView& m);
 void encodeFields(cdr::CdrWriter& w, const FluidPressure& m);
 void encodeFields(cdr::CdrWriter& w, const Odometry& m);
+void encodeFields(cdr::CdrWriter& w, const TwistStamped& m);
+void encodeFields(cdr::CdrWriter& w, const CompressedImage& m);
+void encodeFields(cdr::CdrWriter& w, const MagneticField& m);
 
 bool decodeFields(cdr::CdrReader& r, Time* m);
 bool decodeFields(cdr::CdrReader& r, Header* m);
@@ -45,6 +48,9 @@ bool decodeFields(cdr::CdrReader& r, Imu* m);
 bool decodeFields(cdr::CdrReader& r, Image* m);
 bool decodeFields(cdr::CdrReader& r, FluidPressure* m);
 bool decodeFields(cdr::CdrReader& r, Odometry* m);
+bool decodeFields(cdr::CdrReader& r, TwistStamped* m);
+bool decodeFields(cdr::CdrReader& r, CompressedImage* m);
+bool decodeFields(cdr::CdrReader& r, MagneticField* m);
 
 // Bytes the whole encoded message takes, encapsulation header included.
 template <typename Msg>

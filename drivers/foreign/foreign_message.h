@@ -33,6 +33,9 @@ struct ForeignTopic {
   std::string type;
   Serialization serialization = Serialization::kCdr;
   std::uint64_t messages = 0;  // from the file's index or summary; 0 when it has none
+  // Why its messages cannot be decoded (e.g. an MCAP channel in another encoding than cdr/ros2msg);
+  // empty when they can. forEach() skips such a topic's messages.
+  std::string unsupported;
 };
 
 // A foreign recording opened for reading. Implementations check the container (magic, version,

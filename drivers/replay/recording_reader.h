@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "drivers/mcap/reader.h"
+#include "drivers/replay/replay_event_source.h"
 #include "drivers/recording/frame_truth.h"
 #include "drivers/recording/topics.h"
 #include "nav/types/input_sample.h"
@@ -16,50 +17,29 @@
 
 namespace deepnav {
 
-// One item of a recording as the replay sees it.
-struct ReplayEvent {
-  enum class Kind { kInput, kSolution, kFrame, kTruth, kFrameTruth };
-  Kind kind = Kind::kInput;
-  TimeUs t_us = 0;  // when the loop meets it: an input's arrival (its stamp unless recorded otherwise)
-  InputSample input;
-  NavSolution solution;
-  TruthSample truth;
-  const StereoFrame* frame = nullptr;  // valid during the callback only
-  const FrameTruth* frame_truth = nullptr;  // kFrameTruth: poses only (no maps), during the callback only
-};
-
-struct ReplayReadStats {
-  std::uint64_t messages = 0;
-  std::uint64_t bad_messages = 0;   // undecodable: counted and skipped
-  std::uint64_t unknown_topic = 0;  // channels deepnav does not know (e.g. from another tool)
-  std::uint64_t incomplete_frames = 0;
-};
-
 // Reads a deepnav recording back into the loop's sample types: the replay driver. Bad messages are
 // counted and skipped, never fatal; a recording cut off by a crash replays up to its last complete
 // chunk, with a warning.
-class RecordingReader {
+class RecordingReader : public ReplayEventSource {
  public:
-  using Callback = std::function<bool(const ReplayEvent&)>;  // return false to stop
-
   bool open(const std::string& path, std::string* error);
 
   // True when the recording holds the loop's own outputs (a recording of a run, not a raw sensor log).
-  bool hasSolutions() const { return count(Topic::kNavSolution) > 0; }
+  bool hasSolutions() const override { return count(Topic::kNavSolution) > 0; }
   bool hasTruth() const { return count(Topic::kTruth) > 0; }
   std::uint64_t count(Topic topic) const { return counts_[static_cast<std::size_t>(topic)]; }
 
   // File order = the order the loop consumed and produced; log-time order = sensor time order.
-  bool forEach(bool log_time_order, const Callback& callback, std::string* error);
+  bool forEach(bool log_time_order, const Callback& callback, std::string* error) override;
 
   // Also deliver the simulator's per-pair truth (/truth/frame) as kFrameTruth events (off by default:
   // the loop never sees it; evaluation, e.g. the replay's VO consistency, asks for it).
   void setDeliverFrameTruth(bool deliver) { deliver_frame_truth_ = deliver; }
 
-  const std::map<std::string, std::string>* metadata(const std::string& name) const;
-  bool truncated() const { return reader_.truncated(); }
-  const std::vector<std::string>& warnings() const { return reader_.warnings(); }
-  const ReplayReadStats& stats() const { return stats_; }
+  const std::map<std::string, std::string>* metadata(const std::string& name) const override;
+  bool truncated() const override { return reader_.truncated(); }
+  const std::vector<std::string>& warnings() const override { return reader_.warnings(); }
+  const ReplayReadStats& stats() const override { return stats_; }
 
  private:
   bool handle(const mcap::MessageView& m, const Callback& callback);
