@@ -13,7 +13,7 @@ packages=(
   libc6-dev libstdc++-12-dev
   libeigen3-dev libopencv-dev libopencv-contrib-dev liboctomap-dev
   libaravis-dev libusb-1.0-0-dev libmodbus-dev libyaml-cpp-dev libcli11-dev libspdlog-dev libfmt-dev
-  libgtest-dev libgmock-dev libzstd-dev liblz4-dev libnanoflann-dev libceres-dev
+  libgtest-dev libgmock-dev libzstd-dev liblz4-dev libbz2-dev libnanoflann-dev libceres-dev
 )
 # Without maintainer scripts, update-alternatives never ran: make the links it would have made for the
 # reference BLAS and LAPACK (libopencv_core needs libblas.so.3 and liblapack.so.3).
