@@ -8,6 +8,31 @@
 namespace deepnav {
 namespace {
 
+// An equidistant lens as OpenCV's rational model, kept when the two differ by under 0.1 px over the image.
+bool rewriteEquidistant(const cv::Vec4d& k, cv::Size size, const std::string& path, const std::string& cam,
+                        CameraCalibration* out, std::vector<std::string>* notes, std::string* error) {
+  EquidistantFit fit;
+  std::string why;
+  if (!equidistantToRational(out->K, k, size, &fit, &why)) {
+    *error = path + ": key '" + cam + ".distortion_coeffs' (equidistant): " + why;
+    return false;
+  }
+  if (fit.max_error_px > kMaxEquidistantFitErrorPx) {
+    *error = path + ": key '" + cam + ".distortion_coeffs' (equidistant): the rational model fits this lens only to " +
+             std::to_string(fit.max_error_px) + " px over the image (limit 0.1 px); deepnav rectifies with "
+             "OpenCV's pinhole models and cannot use it";
+    return false;
+  }
+  char text[240];
+  std::snprintf(text, sizeof text,
+                "%s: equidistant lens rewritten as OpenCV's rational model (k1 k2 k3 k4 k5 k6), largest difference "
+                "%.4f px over the image (rays up to %.1f deg from the axis)",
+                cam.c_str(), fit.max_error_px, fit.max_angle_deg);
+  out->dist = fit.dist;
+  notes->push_back(text);
+  return true;
+}
+
 bool readCamera(const YAML::Node& root, const std::string& cam, const std::string& path, CameraCalibration* out,
                 cv::Size* size, std::vector<std::string>* notes, std::string* error) {
   const YAML::Node node = root[cam];
@@ -25,37 +50,29 @@ bool readCamera(const YAML::Node& root, const std::string& cam, const std::strin
   }
   if (!readYamlNumbers(node, "intrinsics", path, cam, 4, &intrinsics, error) ||
       !readYamlString(node, "distortion_model", path, cam, &distortion, error) ||
-      !readYamlNumbers(node, "distortion_coeffs", path, cam, 4, &coeffs, error) ||
       !readYamlNumbers(node, "resolution", path, cam, 2, &resolution, error))
     return false;
+  if (distortion != "radtan" && distortion != "equidistant" && distortion != "none") {
+    *error = path + ": key '" + cam + ".distortion_model' is " + distortion + "; radtan, equidistant or none expected";
+    return false;
+  }
+  // Kalibr's "none" has no coefficients (an empty list, or none at all).
+  if (distortion == "none") {
+    coeffs.assign(4, 0.0);
+  } else if (!readYamlNumbers(node, "distortion_coeffs", path, cam, 4, &coeffs, error)) {
+    return false;
+  }
   out->K = cv::Matx33d(intrinsics[0], 0, intrinsics[2], 0, intrinsics[1], intrinsics[3], 0, 0, 1);
   *size = cv::Size(static_cast<int>(resolution[0]), static_cast<int>(resolution[1]));
+  if (size->width < 16 || size->height < 16) {
+    *error = path + ": key '" + cam + ".resolution' must be [width, height] of at least 16 x 16 px";
+    return false;
+  }
   if (!checkCameraMatrix(out->K, path, cam + ".intrinsics", error)) return false;
-  if (distortion == "radtan") {
+  if (distortion == "radtan" || distortion == "none") {
     out->dist = (cv::Mat_<double>(1, 5) << coeffs[0], coeffs[1], coeffs[2], coeffs[3], 0.0);
-  } else if (distortion == "equidistant") {
-    EquidistantFit fit;
-    std::string why;
-    const cv::Vec4d k(coeffs[0], coeffs[1], coeffs[2], coeffs[3]);
-    if (!equidistantToRational(out->K, k, *size, &fit, &why)) {
-      *error = path + ": key '" + cam + ".distortion_coeffs' (equidistant): " + why;
-      return false;
-    }
-    char text[240];
-    std::snprintf(text, sizeof text,
-                  "%s: equidistant lens rewritten as OpenCV's rational model (k1 k2 k3 k4 k5 k6), largest difference "
-                  "%.4f px over the image (rays up to %.1f deg from the axis)",
-                  cam.c_str(), fit.max_error_px, fit.max_angle_deg);
-    if (fit.max_error_px > kMaxEquidistantFitErrorPx) {
-      *error = path + ": key '" + cam + ".distortion_coeffs' (equidistant): the rational model fits this lens only to " +
-               std::to_string(fit.max_error_px) + " px over the image (limit 0.1 px); deepnav rectifies with "
-               "OpenCV's pinhole models and cannot use it";
-      return false;
-    }
-    out->dist = fit.dist;
-    notes->push_back(text);
-  } else {
-    *error = path + ": key '" + cam + ".distortion_model' is " + distortion + "; radtan or equidistant expected";
+  } else if (!rewriteEquidistant(cv::Vec4d(coeffs[0], coeffs[1], coeffs[2], coeffs[3]), *size, path, cam, out, notes,
+                                 error)) {
     return false;
   }
   return checkDistortion(out->dist, path, cam + ".distortion_coeffs", error);

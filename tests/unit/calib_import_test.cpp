@@ -119,6 +119,18 @@ TEST(CalibImportKalibr, RewritesAnEquidistantLensAsTheRationalModel) {
   EXPECT_LT(worst, kMaxEquidistantFitErrorPx);
 }
 
+TEST(CalibImportKalibr, ALensWithoutDistortionNeedsNoCoefficients) {
+  const std::string camchain =
+      replaced(kEurocCamchain,
+               "distortion_coeffs: [-0.28340811, 0.07395907, 0.00019359, 1.76187114e-05]\n  distortion_model: radtan",
+               "distortion_model: none");
+  ImportedCalibration got;
+  std::string error;
+  ASSERT_TRUE(importKalibrCamchain(writeTemp("none.yaml", camchain), &got, &error)) << error;
+  EXPECT_EQ(cv::norm(got.calibration.left.dist, cv::NORM_INF), 0.0);
+  EXPECT_DOUBLE_EQ(got.calibration.right.dist.at<double>(0), -0.28368365);
+}
+
 TEST(CalibImportKalibr, RefusesAFisheyeWiderThanAPinholeHolds) {
   // TUM-VI-like 512 x 512 fisheye: its corners lie past 90 deg from the axis.
   std::string camchain = replaced(kEurocCamchain, "intrinsics: [458.654, 457.296, 367.215, 248.375]",
@@ -285,7 +297,7 @@ TEST(CalibImportBadInput, EachBadKalibrFileIsNamedWithItsKey) {
       {"camera_model: pinhole\n  distortion_coeffs: [-0.28368365", "camera_model: omni\n  distortion_coeffs: [-0.28368365",
        "key 'cam1.camera_model' is omni; only pinhole"},
       {"distortion_model: radtan\n  intrinsics: [458.654", "distortion_model: fov\n  intrinsics: [458.654",
-       "key 'cam0.distortion_model' is fov; radtan or equidistant expected"},
+       "key 'cam0.distortion_model' is fov; radtan, equidistant or none expected"},
       {"cam1:\n", "cam2:\n", "key 'cam1' is missing"},
   };
   for (const auto& c : cases) {
