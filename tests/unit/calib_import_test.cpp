@@ -382,6 +382,53 @@ TEST(CalibImportBadInput, EachBadOpenCvFileIsNamedWithItsKey) {
   }
 }
 
+// The round trip without opencv-doc: a rig with the rational model (8 coefficients) through the two formats
+// that carry it, and with plumb_bob through all three.
+TEST(CalibImportRoundTrip, EachFormatGivesBackARationalAndAPlumbBobRig) {
+  StereoCalibration rig;
+  rig.image_size = cv::Size(1280, 1024);
+  rig.left.K = cv::Matx33d(1402.5, 0, 651.25, 0, 1401.75, 509.5, 0, 0, 1);
+  rig.right.K = cv::Matx33d(1398.0, 0, 640.5, 0, 1398.5, 515.0, 0, 0, 1);
+  rig.left.dist = (cv::Mat_<double>(1, 8) << 0.41, -0.12, 0.0006, -0.0004, 0.02, 0.78, -0.05, 0.07);
+  rig.right.dist = (cv::Mat_<double>(1, 8) << 0.38, -0.10, -0.0003, 0.0005, 0.01, 0.74, -0.04, 0.06);
+  cv::Rodrigues(cv::Vec3d(0.004, -0.02, 0.001), rig.R);
+  rig.T = cv::Vec3d(-0.30, 0.002, -0.004);
+  const std::string dir = ::testing::TempDir() + "calib_import_" + std::to_string(getpid()) + "_rt_";
+  for (const bool rational : {true, false}) {
+    StereoCalibration c = rig;
+    if (!rational) {
+      c.left.dist = (cv::Mat_<double>(1, 5) << -0.21, 0.07, 0.0006, -0.0004, 0.0);
+      c.right.dist = (cv::Mat_<double>(1, 5) << -0.19, 0.06, -0.0003, 0.0005, 0.0);
+    }
+    std::vector<std::pair<std::string, ImportedCalibration>> got;
+    std::string error;
+    ImportedCalibration imported;
+    test::writeOpenCvStereo(c, dir + "intrinsics.yml", dir + "extrinsics.yml");
+    ASSERT_TRUE(importOpenCvStereo({dir + "intrinsics.yml", dir + "extrinsics.yml"}, c.image_size, &imported, &error))
+        << error;
+    got.emplace_back("opencv", imported);
+    test::writeCameraInfoPair(c, dir + "left.yaml", dir + "right.yaml");
+    ASSERT_TRUE(importCameraInfoPair(dir + "left.yaml", dir + "right.yaml", &imported, &error)) << error;
+    got.emplace_back("camera-info", imported);
+    if (!rational) {
+      test::writeKalibrCamchain(c, dir + "camchain.yaml");
+      ASSERT_TRUE(importKalibrCamchain(dir + "camchain.yaml", &imported, &error)) << error;
+      got.emplace_back("kalibr", imported);
+    }
+    for (const auto& [format, g] : got) {
+      const StereoCalibration& e = g.calibration;
+      EXPECT_EQ(e.image_size, c.image_size) << format;
+      EXPECT_EQ(cv::norm(cv::Mat(e.left.K), cv::Mat(c.left.K), cv::NORM_INF), 0.0) << format;
+      EXPECT_EQ(cv::norm(cv::Mat(e.right.K), cv::Mat(c.right.K), cv::NORM_INF), 0.0) << format;
+      EXPECT_EQ(cv::norm(e.left.dist, c.left.dist, cv::NORM_INF), 0.0) << format;
+      EXPECT_EQ(cv::norm(e.right.dist, c.right.dist, cv::NORM_INF), 0.0) << format;
+      // camera_info's R and T are products of the rectifying rotations: rounding of a few 1e-15.
+      EXPECT_LT(cv::norm(cv::Mat(e.R), cv::Mat(c.R), cv::NORM_INF), 1e-12) << format;
+      EXPECT_LT(cv::norm(cv::Mat(e.T), cv::Mat(c.T), cv::NORM_INF), 1e-12) << format;
+    }
+  }
+}
+
 TEST(CalibImportCommand, WritesTheCalibrationFileItPrints) {
   ImportCalibrationOptions o;
   o.format = "kalibr";
