@@ -23,6 +23,10 @@ namespace {
 int runReplay(const deepnav::ReplayOptions& options) {
   deepnav::ReplaySummary summary;
   std::string error;
+  if (options.realtime && !options.topics_path.empty()) {
+    std::fprintf(stderr, "deepnav replay: --topics runs on the bench only: replay its output recording with --realtime\n");
+    return 2;
+  }
   const bool ok = options.realtime ? deepnav::runRealtimeReplay(options, &summary, &error)
                                    : deepnav::runBenchReplay(options, &summary, &error);
   if (!ok) {

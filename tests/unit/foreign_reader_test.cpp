@@ -12,6 +12,9 @@
 #include <opencv2/imgcodecs.hpp>
 
 #include "board/config/topic_map_file.h"
+#include "board/config/vehicle_setup.h"
+#include "board/replay/bench_replay.h"
+#include "drivers/replay/recording_reader.h"
 #include "drivers/foreign/foreign_replay_reader.h"
 #include "drivers/foreign/mcap_container.h"
 #include "drivers/foreign/open_foreign_container.h"
@@ -19,7 +22,6 @@
 
 namespace deepnav::foreign {
 namespace {
-
 constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr std::int64_t kT0Ns = 1'700'000'000'000'000'000;  // 2023-11-14, as a ROS clock stamps
 constexpr std::int64_t kT0Us = kT0Ns / 1000;
@@ -50,7 +52,7 @@ ros::Imu imuAt(std::int64_t t_ns, const Eigen::Quaterniond& q) {
 }
 
 cv::Mat pattern(int value) {
-  cv::Mat m(48, 64, CV_8UC1);
+  cv::Mat m(64, 80, CV_8UC1);
   for (int r = 0; r < m.rows; ++r) {
     for (int c = 0; c < m.cols; ++c) m.at<std::uint8_t>(r, c) = static_cast<std::uint8_t>((r * 7 + c * 3 + value) & 0xFF);
   }
@@ -134,8 +136,8 @@ TopicMap parseMap(const std::string& text) {
 
 ForeignVehicle smallCamera() {
   ForeignVehicle v;
-  v.width_px = 64;
-  v.height_px = 48;
+  v.width_px = 80;
+  v.height_px = 64;
   v.channels = 1;
   v.pair_tolerance_us = 5000;
   return v;
@@ -358,7 +360,7 @@ TEST(ForeignReader, ImagesOfAnUnreadEncodingOrAnotherSizeStopTheReplayNamingTheT
   big.height_px = 516;
   reader.setVehicle(big);
   EXPECT_FALSE(collect(reader, &c, &error));
-  EXPECT_NE(error.find("topic '/left': images are 64x48; the board's camera is 688x516"), std::string::npos) << error;
+  EXPECT_NE(error.find("topic '/left': images are 80x64; the board's camera is 688x516"), std::string::npos) << error;
 }
 
 TEST(ForeignReader, UndecodableMessagesAreCountedSkippedAndNamedOnce) {
@@ -402,3 +404,56 @@ TEST(ForeignReader, TheFactoryRefusesWhatIsNeitherMcapNorABag) {
 
 }  // namespace
 }  // namespace deepnav::foreign
+
+namespace deepnav {
+namespace {
+
+// An 80x64 camera (ORB VO takes 64x64 at least) for the half-second test recording.
+const char* kSmallBoard =
+    "camera:\n  width_px: 80\n  height_px: 64\n  fx_px: 60\n  fy_px: 60\n  cx_px: 39.5\n  cy_px: 31.5\n"
+    "vision:\n  dense_disparities: 16\n";
+
+TEST(ForeignBenchReplay, TheMapsMountingsReplaceTheBoardsAndTheRunIsRecordedWithThem) {
+  const std::string dir = ::testing::TempDir() + "foreign_bench/";
+  std::filesystem::create_directories(dir);
+  const std::string recording = foreign::writeSensors("bench.mcap");
+  std::ofstream(dir + "board.yaml") << kSmallBoard;
+  std::ofstream(dir + "map.yaml") << foreign::kMapText << "  /unused: {sensor: dvl}\n";
+  ReplayOptions o;
+  o.input_path = recording;
+  o.topics_path = dir + "map.yaml";
+  o.board_path = dir + "board.yaml";
+  o.out_dir = dir + "out";
+  o.progress = false;
+  ReplaySummary s;
+  std::string error;
+  // A topic of the map that the recording does not hold: named, nothing run.
+  EXPECT_FALSE(runBenchReplay(o, &s, &error));
+  EXPECT_NE(error.find("topic '/unused' (in " + dir + "map.yaml) is not in the recording"), std::string::npos) << error;
+  std::string map_text = foreign::kMapText;
+  map_text.replace(map_text.find("/dvl: {sensor: dvl}"), 19, "/dvl: {sensor: dvl, rotation_deg: [0, 0, 45]}");
+  std::ofstream(dir + "map.yaml") << map_text;
+  o.overrides = {"ekf.dvl_sigma_mps=0.02"};
+  ASSERT_TRUE(runBenchReplay(o, &s, &error)) << error;
+  EXPECT_EQ(s.frames, 5u);
+  EXPECT_EQ(s.inputs.imu, 5u);
+  EXPECT_EQ(s.inputs.dvl, 10u);
+  EXPECT_EQ(s.inputs.depth, 5u);
+  EXPECT_EQ(s.inputs.heading, 10u);
+  RecordingReader out;
+  ASSERT_TRUE(out.open(o.out_dir + "/replay.mcap", &error)) << error;
+  VehicleSetup stored;
+  ASSERT_TRUE(loadReplaySetup("", out, "replay.mcap", &stored, &error)) << error;
+  const Eigen::Quaterniond q45(Eigen::AngleAxisd(M_PI / 4, Eigen::Vector3d::UnitZ()));
+  EXPECT_LT(stored.config.ekf.q_robot_dvl.angularDistance(q45), 1e-12);
+  EXPECT_EQ(stored.config.ekf.dvl_sigma_mps, 0.02);  // the command line's --set still applies
+  ASSERT_NE(out.metadata("deepnav.foreign"), nullptr);
+  EXPECT_EQ(out.metadata("deepnav.foreign")->at("recording"), recording);
+  // --realtime does not take a foreign recording.
+  o.realtime = true;
+  EXPECT_FALSE(runBenchReplay(o, &s, &error));
+  EXPECT_NE(error.find("--topics replays on the bench only"), std::string::npos) << error;
+}
+
+}  // namespace
+}  // namespace deepnav
