@@ -342,8 +342,9 @@ int runCalibrateCommand(const CalibrateCommandOptions& o) {
     return 2;
   }
   StereoCalibrationResult result;
-  const bool ok = target.type == "checkerboard" ? calibrateStereoCheckerboard(pairs, target.checkerboard, &result, &error)
-                                                : calibrateStereoCharuco(pairs, target.charuco, &result, &error);
+  const bool ok = target.type == "checkerboard"
+                      ? calibrateStereoCheckerboard(pairs, target.checkerboard, &result, &error)
+                      : calibrateStereoCharuco(pairs, target.charuco, &result, &error);
   printPairReports(result);
   if (!ok) {
     std::fprintf(stderr, "deepnav calibrate: %s\n", error.c_str());

@@ -75,8 +75,8 @@ void printImported(const ImportCalibrationOptions& o, const ImportedCalibration&
   std::printf("\n  resolution %d x %d px\n", c.image_size.width, c.image_size.height);
   for (int side = 0; side < 2; ++side) {
     const CameraCalibration& cam = side == 0 ? c.left : c.right;
-    std::printf("  %-5s fx %.3f fy %.3f cx %.3f cy %.3f px, distortion %s\n", side == 0 ? "left" : "right",
-                cam.K(0, 0), cam.K(1, 1), cam.K(0, 2), cam.K(1, 2), distortionText(cam.dist).c_str());
+    std::printf("  %-5s fx %.3f fy %.3f cx %.3f cy %.3f px, distortion %s\n", side == 0 ? "left" : "right", cam.K(0, 0),
+                cam.K(1, 1), cam.K(0, 2), cam.K(1, 2), distortionText(cam.dist).c_str());
   }
   cv::Vec3d rvec;
   cv::Rodrigues(c.R, rvec);

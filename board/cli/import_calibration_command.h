@@ -8,7 +8,7 @@ struct ImportCalibrationOptions {
   std::string format;               // kalibr | opencv | camera-info
   std::vector<std::string> inputs;  // kalibr: camchain.yaml; opencv: 1-2 files; camera-info: left.yaml right.yaml
   std::string out_path = "calibration.yaml";
-  std::string image_size;           // opencv: "WIDTHxHEIGHT" when the files hold none
+  std::string image_size;  // opencv: "WIDTHxHEIGHT" when the files hold none
 };
 
 // `deepnav import calibration`: reads a Kalibr, OpenCV stereo_calib or camera_info pair calibration, checks

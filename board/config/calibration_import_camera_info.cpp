@@ -35,8 +35,8 @@ bool readMatrix(const YAML::Node& root, const std::string& key, const std::strin
     return false;
   const bool shape_ok = cols > 0 ? (r == rows && c == cols) : ((r == 1 || c == 1) && r * c > 0);
   if (!shape_ok) {
-    *error = path + ": key '" + key + "' is " + std::to_string(r) + " x " + std::to_string(c) + ", " + shape +
-             " expected";
+    *error =
+        path + ": key '" + key + "' is " + std::to_string(r) + " x " + std::to_string(c) + ", " + shape + " expected";
     return false;
   }
   if (!readYamlNumbers(node, "data", path, key, static_cast<std::size_t>(r * c), &data, error)) return false;
@@ -44,15 +44,18 @@ bool readMatrix(const YAML::Node& root, const std::string& key, const std::strin
   return true;
 }
 
-bool readDistortion(const YAML::Node& root, const std::string& path, CameraInfoFile* f,
-                    std::vector<std::string>* notes, std::string* error) {
+bool readDistortion(const YAML::Node& root, const std::string& path, CameraInfoFile* f, std::vector<std::string>* notes,
+                    std::string* error) {
   std::string model;
   cv::Mat D;
   if (!readYamlString(root, "distortion_model", path, "", &model, error) ||
       !readMatrix(root, "distortion_coefficients", path, 1, 0, &D, error))
     return false;
   const std::size_t n = D.total();
-  const std::size_t expected = model == "plumb_bob" ? 5 : model == "rational_polynomial" ? 8 : model == "equidistant" ? 4 : 0;
+  const std::size_t expected = model == "plumb_bob"             ? 5
+                               : model == "rational_polynomial" ? 8
+                               : model == "equidistant"         ? 4
+                                                                : 0;
   if (expected == 0) {
     *error = path + ": key 'distortion_model' is " + model + "; plumb_bob, rational_polynomial or equidistant expected";
     return false;
@@ -77,8 +80,9 @@ bool readDistortion(const YAML::Node& root, const std::string& path, CameraInfoF
     return false;
   }
   char text[200];
-  std::snprintf(text, sizeof text, "%s: equidistant lens rewritten as OpenCV's rational model, largest difference %.4f px",
-                path.c_str(), fit.max_error_px);
+  std::snprintf(text, sizeof text,
+                "%s: equidistant lens rewritten as OpenCV's rational model, largest difference %.4f px", path.c_str(),
+                fit.max_error_px);
   notes->push_back(text);
   f->camera.dist = fit.dist;
   return true;

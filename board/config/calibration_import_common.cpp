@@ -15,9 +15,10 @@ bool fail(const std::string& file, const std::string& key, const std::string& wh
 bool checkCameraMatrix(const cv::Matx33d& K, const std::string& file, const std::string& key, std::string* error) {
   if (!cv::checkRange(cv::Mat(K))) return fail(file, key, "holds non-finite values", error);
   if (!(K(0, 0) > 0.0) || !(K(1, 1) > 0.0))
-    return fail(file, key, "focal lengths must be positive (fx " + std::to_string(K(0, 0)) + ", fy " +
-                               std::to_string(K(1, 1)) + ")",
-                error);
+    return fail(
+        file, key,
+        "focal lengths must be positive (fx " + std::to_string(K(0, 0)) + ", fy " + std::to_string(K(1, 1)) + ")",
+        error);
   if (K(1, 0) != 0.0 || K(2, 0) != 0.0 || K(2, 1) != 0.0 || K(2, 2) != 1.0)
     return fail(file, key, "is not a camera matrix [fx s cx; 0 fy cy; 0 0 1]", error);
   return true;
@@ -54,9 +55,10 @@ bool checkSameResolution(cv::Size left, cv::Size right, const std::string& file,
 bool checkDistortion(const cv::Mat& dist, const std::string& file, const std::string& key, std::string* error) {
   const std::size_t n = dist.total();
   if (!(n == 4 || n == 5 || n == 8 || n == 12 || n == 14))
-    return fail(file, key, "must hold 4, 5, 8, 12 or 14 coefficients (OpenCV order k1 k2 p1 p2 [k3 ...]), not " +
-                               std::to_string(n),
-                error);
+    return fail(
+        file, key,
+        "must hold 4, 5, 8, 12 or 14 coefficients (OpenCV order k1 k2 p1 p2 [k3 ...]), not " + std::to_string(n),
+        error);
   if (!cv::checkRange(dist)) return fail(file, key, "holds non-finite values", error);
   return true;
 }

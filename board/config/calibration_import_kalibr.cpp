@@ -19,7 +19,8 @@ bool rewriteEquidistant(const cv::Vec4d& k, cv::Size size, const std::string& pa
   }
   if (fit.max_error_px > kMaxEquidistantFitErrorPx) {
     *error = path + ": key '" + cam + ".distortion_coeffs' (equidistant): the rational model fits this lens only to " +
-             std::to_string(fit.max_error_px) + " px over the image (limit 0.1 px); deepnav rectifies with "
+             std::to_string(fit.max_error_px) +
+             " px over the image (limit 0.1 px); deepnav rectifies with "
              "OpenCV's pinhole models and cannot use it";
     return false;
   }

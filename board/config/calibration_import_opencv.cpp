@@ -90,8 +90,9 @@ bool readImageSize(const std::vector<OpenCvFile>& files, cv::Size option, cv::Si
   if (!h && !error->empty()) return false;
   if (!w || !h) {
     if (option.width <= 0) {
-      *error = files.front().path + ": no image size (keys 'image_width', 'image_height'; stereo_calib writes none): "
-                                    "give --image-size WIDTHxHEIGHT";
+      *error = files.front().path +
+               ": no image size (keys 'image_width', 'image_height'; stereo_calib writes none): "
+               "give --image-size WIDTHxHEIGHT";
       return false;
     }
     *size = option;
@@ -99,8 +100,8 @@ bool readImageSize(const std::vector<OpenCvFile>& files, cv::Size option, cv::Si
   }
   const cv::FileNode wn = (*w->storage)["image_width"], hn = (*h->storage)["image_height"];
   if (!wn.isInt() || !hn.isInt()) {
-    *error = (wn.isInt() ? h : w)->path + ": key '" + (wn.isInt() ? "image_height" : "image_width") +
-             "' must be an integer";
+    *error =
+        (wn.isInt() ? h : w)->path + ": key '" + (wn.isInt() ? "image_height" : "image_width") + "' must be an integer";
     return false;
   }
   *size = cv::Size(static_cast<int>(wn), static_cast<int>(hn));
@@ -141,7 +142,8 @@ bool importOpenCvStereo(const std::vector<std::string>& paths, cv::Size image_si
   c.T = cv::Vec3d(T);
   const auto where = [&](const char* key) { return findKey(files, key, true, error)->path; };
   if (!checkSameResolution(c.image_size, c.image_size, files.front().path, "image_width", error) ||
-      !checkCameraMatrix(c.left.K, where("M1"), "M1", error) || !checkDistortion(c.left.dist, where("D1"), "D1", error) ||
+      !checkCameraMatrix(c.left.K, where("M1"), "M1", error) ||
+      !checkDistortion(c.left.dist, where("D1"), "D1", error) ||
       !checkCameraMatrix(c.right.K, where("M2"), "M2", error) ||
       !checkDistortion(c.right.dist, where("D2"), "D2", error) || !checkRotation(c.R, where("R"), "R", error) ||
       !checkBaseline(c.T, where("T"), "T", error))

@@ -49,7 +49,8 @@ fs::path scratch(const std::string& name) {
 }
 
 TEST(CheckerboardCli, CalibratesTheOpencvDocSetToASubPixelErrorAndTheBoardRectifiesWithIt) {
-  if (!fs::exists(kOpencvDocData / "left01.jpg")) GTEST_SKIP() << kOpencvDocData << " absent (apt-get install opencv-doc)";
+  if (!fs::exists(kOpencvDocData / "left01.jpg"))
+    GTEST_SKIP() << kOpencvDocData << " absent (apt-get install opencv-doc)";
   const fs::path target = scratch("target.yaml");
   std::ofstream(target) << "type: checkerboard\ninner_corners: [9, 6]\nsquare_m: 0.025\n";
   std::string images;

@@ -237,10 +237,11 @@ std::string CheckerboardOpencvDoc::error_;
 TEST_F(CheckerboardOpencvDoc, CalibratesTheRealStereoSetToASubPixelError) {
   ASSERT_TRUE(ok_) << error_;
   const StereoCalibration& c = result_->calibration;
-  std::printf("opencv-doc stereo set: %d of %zu pairs used, rms %.3f px (mono %.3f / %.3f px), fx %.2f / %.2f px, "
-              "baseline %.4f m with %.0f mm squares\n",
-              result_->pairs_used, result_->pairs.size(), result_->rms_px, result_->rms_left_mono_px,
-              result_->rms_right_mono_px, c.left.K(0, 0), c.right.K(0, 0), cv::norm(c.T), kAssumedSquareM * 1000);
+  std::printf(
+      "opencv-doc stereo set: %d of %zu pairs used, rms %.3f px (mono %.3f / %.3f px), fx %.2f / %.2f px, "
+      "baseline %.4f m with %.0f mm squares\n",
+      result_->pairs_used, result_->pairs.size(), result_->rms_px, result_->rms_left_mono_px,
+      result_->rms_right_mono_px, c.left.K(0, 0), c.right.K(0, 0), cv::norm(c.T), kAssumedSquareM * 1000);
   // Every real pair is used: the whole board is in both images of each.
   EXPECT_EQ(static_cast<std::size_t>(result_->pairs_used), real_pairs_);
   // Sub-pixel, as the issue asks: half a pixel is what corners located to a fraction of a pixel on
@@ -308,8 +309,8 @@ TEST_F(CheckerboardOpencvDoc, EachImportFormatGivesBackTheCalibration) {
   test::writeKalibrCamchain(c, dir + "camchain.yaml");
   ASSERT_TRUE(importKalibrCamchain(dir + "camchain.yaml", &imported[0].second, &error)) << error;
   test::writeOpenCvStereo(c, dir + "intrinsics.yml", dir + "extrinsics.yml");
-  ASSERT_TRUE(importOpenCvStereo({dir + "intrinsics.yml", dir + "extrinsics.yml"}, c.image_size, &imported[1].second,
-                                 &error))
+  ASSERT_TRUE(
+      importOpenCvStereo({dir + "intrinsics.yml", dir + "extrinsics.yml"}, c.image_size, &imported[1].second, &error))
       << error;
   test::writeCameraInfoPair(c, dir + "left.yaml", dir + "right.yaml");
   ASSERT_TRUE(importCameraInfoPair(dir + "left.yaml", dir + "right.yaml", &imported[2].second, &error)) << error;

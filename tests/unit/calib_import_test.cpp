@@ -89,8 +89,9 @@ TEST(CalibImportKalibr, ReadsAHandWrittenEurocCamchain) {
 TEST(CalibImportKalibr, RewritesAnEquidistantLensAsTheRationalModel) {
   // A wide-angle lens calibrated with Kalibr's equidistant model (58 deg from the axis to the image corners).
   const std::string camchain =
-      replaced(replaced(kEurocCamchain, "distortion_coeffs: [-0.28340811, 0.07395907, 0.00019359, 1.76187114e-05]\n"
-                                        "  distortion_model: radtan",
+      replaced(replaced(kEurocCamchain,
+                        "distortion_coeffs: [-0.28340811, 0.07395907, 0.00019359, 1.76187114e-05]\n"
+                        "  distortion_model: radtan",
                         "distortion_coeffs: [-0.0118, 0.0213, -0.0301, 0.0124]\n  distortion_model: equidistant"),
                "distortion_coeffs: [-0.28368365, 0.07451284, -0.00010473, -3.55590700e-05]\n  distortion_model: radtan",
                "distortion_coeffs: [-0.0102, 0.0187, -0.0266, 0.0110]\n  distortion_model: equidistant");
@@ -135,8 +136,9 @@ TEST(CalibImportKalibr, RefusesAFisheyeWiderThanAPinholeHolds) {
   // TUM-VI-like 512 x 512 fisheye: its corners lie past 90 deg from the axis.
   std::string camchain = replaced(kEurocCamchain, "intrinsics: [458.654, 457.296, 367.215, 248.375]",
                                   "intrinsics: [190.978, 190.973, 254.932, 256.897]");
-  camchain = replaced(camchain, "distortion_coeffs: [-0.28340811, 0.07395907, 0.00019359, 1.76187114e-05]\n"
-                                "  distortion_model: radtan",
+  camchain = replaced(camchain,
+                      "distortion_coeffs: [-0.28340811, 0.07395907, 0.00019359, 1.76187114e-05]\n"
+                      "  distortion_model: radtan",
                       "distortion_coeffs: [0.0034824, 0.00071503, -0.0020532, 0.00020294]\n"
                       "  distortion_model: equidistant");
   camchain = replaced(camchain, "resolution: [752, 480]", "resolution: [512, 512]");
@@ -145,7 +147,7 @@ TEST(CalibImportKalibr, RefusesAFisheyeWiderThanAPinholeHolds) {
   const std::string path = writeTemp("tumvi.yaml", camchain);
   EXPECT_FALSE(importKalibrCamchain(path, &got, &error));
   EXPECT_TRUE(has(error, path + ": key 'cam0.distortion_coeffs' (equidistant): the image corners lie 115.6 deg from "
-                          "the axis; a pinhole rectification holds rays under 89 deg only"))
+                                "the axis; a pinhole rectification holds rays under 89 deg only"))
       << error;
 }
 
@@ -198,8 +200,8 @@ projection_matrix:
 TEST(CalibImportCameraInfo, RecoversTheExtrinsicsFromTheRectification) {
   ImportedCalibration got;
   std::string error;
-  ASSERT_TRUE(importCameraInfoPair(writeTemp("left.yaml", kLeftInfo), writeTemp("right.yaml", kRightInfo), &got,
-                                   &error))
+  ASSERT_TRUE(
+      importCameraInfoPair(writeTemp("left.yaml", kLeftInfo), writeTemp("right.yaml", kRightInfo), &got, &error))
       << error;
   const StereoCalibration& c = got.calibration;
   cv::Matx33d R_true;
@@ -292,10 +294,11 @@ TEST(CalibImportBadInput, EachBadKalibrFileIsNamedWithItsKey) {
        "key 'cam1.intrinsics' focal lengths must be positive"},
       {"resolution: [752, 480]\n  rostopic: /cam1", "resolution: [640, 480]\n  rostopic: /cam1",
        "key 'cam1.resolution' differs between the cameras: 752 x 480 (left) and 640 x 480 (right)"},
-      {"- [0.9999972565, 0.002312067192,", "- [1.9999972565, 0.002312067192,", "key 'cam1.T_cn_cnm1' is not a rotation"},
+      {"- [0.9999972565, 0.002312067192,", "- [1.9999972565, 0.002312067192,",
+       "key 'cam1.T_cn_cnm1' is not a rotation"},
       {"0.000399121547]", "0.0]\n  - [0.0, 0.0, 0.0, 1.0]", "key 'cam1.T_cn_cnm1' must hold 16 numbers, not 20"},
-      {"camera_model: pinhole\n  distortion_coeffs: [-0.28368365", "camera_model: omni\n  distortion_coeffs: [-0.28368365",
-       "key 'cam1.camera_model' is omni; only pinhole"},
+      {"camera_model: pinhole\n  distortion_coeffs: [-0.28368365",
+       "camera_model: omni\n  distortion_coeffs: [-0.28368365", "key 'cam1.camera_model' is omni; only pinhole"},
       {"distortion_model: radtan\n  intrinsics: [458.654", "distortion_model: fov\n  intrinsics: [458.654",
        "key 'cam0.distortion_model' is fov; radtan, equidistant or none expected"},
       {"cam1:\n", "cam2:\n", "key 'cam1' is missing"},
@@ -371,8 +374,10 @@ TEST(CalibImportBadInput, EachBadOpenCvFileIsNamedWithItsKey) {
        "data: [ 0., 0., 0. ]", "key 'T' gives a baseline of 0 m"},
   };
   for (const auto& c : cases) {
-    const std::string in = writeTemp("bad_intrinsics.yml", c.in_extrinsics ? kIntrinsicsYml : replaced(kIntrinsicsYml, c.from, c.to));
-    const std::string ex = writeTemp("bad_extrinsics.yml", c.in_extrinsics ? replaced(kExtrinsicsYml, c.from, c.to) : kExtrinsicsYml);
+    const std::string in =
+        writeTemp("bad_intrinsics.yml", c.in_extrinsics ? kIntrinsicsYml : replaced(kIntrinsicsYml, c.from, c.to));
+    const std::string ex =
+        writeTemp("bad_extrinsics.yml", c.in_extrinsics ? replaced(kExtrinsicsYml, c.from, c.to) : kExtrinsicsYml);
     ImportedCalibration got;
     std::string error;
     EXPECT_FALSE(importOpenCvStereo({in, ex}, cv::Size(640, 480), &got, &error)) << c.message;

@@ -50,7 +50,8 @@ std::string checkerboardAlignPair(const TargetView& left, TargetView* right, con
   const int cols = target.inner_cols, rows = target.inner_rows;
   if (left.corners_px.size() != right->corners_px.size() || left.corners_px.empty()) return "";
   const auto cosine = [](cv::Point2f a, cv::Point2f b) { return a.dot(b) / std::sqrt(a.dot(a) * b.dot(b) + 1e-12f); };
-  const cv::Point2f row_left = rowDirection(left.corners_px, cols), column_left = columnDirection(left.corners_px, cols, rows);
+  const cv::Point2f row_left = rowDirection(left.corners_px, cols),
+                    column_left = columnDirection(left.corners_px, cols, rows);
   std::vector<cv::Point2f> best;
   float best_score = -2.0f;
   for (int flip = 0; flip < 4; ++flip) {
@@ -60,7 +61,8 @@ std::string checkerboardAlignPair(const TargetView& left, TargetView* right, con
     if (flip & 2)
       for (int r = 0; r < rows / 2; ++r)
         std::swap_ranges(c.begin() + r * cols, c.begin() + (r + 1) * cols, c.begin() + (rows - 1 - r) * cols);
-    const float score = std::min(cosine(row_left, rowDirection(c, cols)), cosine(column_left, columnDirection(c, cols, rows)));
+    const float score =
+        std::min(cosine(row_left, rowDirection(c, cols)), cosine(column_left, columnDirection(c, cols, rows)));
     if (score > best_score) {
       best_score = score;
       best = std::move(c);

@@ -29,9 +29,7 @@ double undistortAngle(const cv::Vec4d& k, double theta_d) {
   return theta;
 }
 
-double equidistantGain(const cv::Vec4d& k, double r) {
-  return r < 1e-12 ? 1.0 : thetaDistorted(k, std::atan(r)) / r;
-}
+double equidistantGain(const cv::Vec4d& k, double r) { return r < 1e-12 ? 1.0 : thetaDistorted(k, std::atan(r)) / r; }
 
 double rationalGain(const double c[6], double r) {
   const double r2 = r * r;
@@ -58,9 +56,10 @@ bool equidistantToRational(const cv::Matx33d& K, const cv::Vec4d& k, cv::Size si
   if (widest_theta >= 89.0 * kPi / 180.0) {
     if (error) {
       char text[160];
-      std::snprintf(text, sizeof text,
-                    "the image corners lie %.1f deg from the axis; a pinhole rectification holds rays under 89 deg only",
-                    fit->max_angle_deg);
+      std::snprintf(
+          text, sizeof text,
+          "the image corners lie %.1f deg from the axis; a pinhole rectification holds rays under 89 deg only",
+          fit->max_angle_deg);
       *error = text;
     }
     return false;

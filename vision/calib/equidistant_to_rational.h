@@ -13,9 +13,9 @@ namespace deepnav {
 // c1..c6 are fitted over the radii the image holds (0 to the corners' radius) by linearised least squares,
 // iterated with the previous denominator (Sanathanan-Koerner), weighted by r so the residual is in pixels.
 struct EquidistantFit {
-  cv::Mat dist;               // 1 x 8 OpenCV order: k1 k2 p1 p2 k3 k4 k5 k6 (p1 = p2 = 0)
-  double max_error_px = 0.0;  // largest |difference| of the two models on the image, in pixels (fx)
-  double max_angle_deg = 0.0; // widest ray angle from the axis within the image
+  cv::Mat dist;                // 1 x 8 OpenCV order: k1 k2 p1 p2 k3 k4 k5 k6 (p1 = p2 = 0)
+  double max_error_px = 0.0;   // largest |difference| of the two models on the image, in pixels (fx)
+  double max_angle_deg = 0.0;  // widest ray angle from the axis within the image
 };
 
 // False with a reason when the image corners reach 89 deg from the axis or beyond (no pinhole rectification

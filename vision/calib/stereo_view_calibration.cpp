@@ -162,10 +162,9 @@ bool calibrateStereoViews(const std::vector<CalibrationPairInput>& pairs, const 
       commonCorners(kept[k].left, kept[k].right, board_corners_m, &object[k], &image_left[k], &image_right[k]);
     cv::Mat K1(calib.left.K), K2(calib.right.K), D1 = calib.left.dist.clone(), D2 = calib.right.dist.clone();
     cv::Mat R, T, E, F, per_view;
-    result->rms_px = cv::stereoCalibrate(
-        object, image_left, image_right, K1, D1, K2, D2, size, R, T, E, F, per_view,
-        cv::CALIB_USE_INTRINSIC_GUESS | distortion_flags,
-        cv::TermCriteria(cv::TermCriteria::COUNT + cv::TermCriteria::EPS, 200, 1e-12));
+    result->rms_px = cv::stereoCalibrate(object, image_left, image_right, K1, D1, K2, D2, size, R, T, E, F, per_view,
+                                         cv::CALIB_USE_INTRINSIC_GUESS | distortion_flags,
+                                         cv::TermCriteria(cv::TermCriteria::COUNT + cv::TermCriteria::EPS, 200, 1e-12));
     calib.left.K = cv::Matx33d(K1);
     calib.right.K = cv::Matx33d(K2);
     calib.left.dist = D1.reshape(1, 1).clone();

@@ -21,20 +21,20 @@ struct CalibrationPairInput {
 struct CalibrationPairReport {
   std::string name;
   bool used = false;
-  std::string reason;          // why it was rejected (empty when used)
+  std::string reason;  // why it was rejected (empty when used)
   int corners_left = 0;
   int corners_right = 0;
-  int corners_common = 0;      // seen by both cameras (used for the extrinsics)
+  int corners_common = 0;  // seen by both cameras (used for the extrinsics)
   double edge_width_left_px = 0.0;
   double edge_width_right_px = 0.0;
-  double rms_left_px = 0.0;    // reprojection error of this view after the stereo calibration
+  double rms_left_px = 0.0;  // reprojection error of this view after the stereo calibration
   double rms_right_px = 0.0;
 };
 
 struct StereoCalibrationResult {
   StereoCalibration calibration;
-  double rms_px = 0.0;          // stereoCalibrate's overall reprojection error (both cameras)
-  double rms_left_mono_px = 0.0;   // cv::calibrateCamera of each camera alone
+  double rms_px = 0.0;            // stereoCalibrate's overall reprojection error (both cameras)
+  double rms_left_mono_px = 0.0;  // cv::calibrateCamera of each camera alone
   double rms_right_mono_px = 0.0;
   int pairs_used = 0;
   std::vector<CalibrationPairReport> pairs;
