@@ -262,7 +262,7 @@ TEST_F(CheckerboardOpencvDoc, RejectsTheCutAndTheRepeatedPairWithTheirReasons) {
   const CalibrationPairReport* again = report("again");
   ASSERT_TRUE(cut && again);
   EXPECT_FALSE(cut->used);
-  EXPECT_TRUE(has(cut->reason, "too few corners: 0 left, 54 right")) << cut->reason;
+  EXPECT_TRUE(has(cut->reason, "board not wholly seen: 0 corners left, 54 right, of 54")) << cut->reason;
   EXPECT_FALSE(again->used);
   EXPECT_TRUE(has(again->reason, "duplicate view of left01.jpg")) << again->reason;
 }

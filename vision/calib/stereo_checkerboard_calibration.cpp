@@ -14,7 +14,7 @@ bool calibrateStereoCheckerboard(const std::vector<CalibrationPairInput>& pairs,
   }
   // The whole board in each camera: a partial view has no numbering.
   const ViewScreening screening{target.inner_cols * target.inner_rows, target.max_edge_width_px, target.duplicate_px,
-                                target.fix_k3};
+                                target.fix_k3, true};
   return calibrateStereoViews(
       pairs, [&](const cv::Mat& grey) { return detectCheckerboardView(grey, target); }, checkerboardCorners(target),
       screening, [&](const TargetView& l, TargetView* r) { return checkerboardAlignPair(l, r, target); }, result,

@@ -47,6 +47,10 @@ struct KeptPair {
 std::string screen(const TargetView& left, const TargetView& right, const ViewScreening& target,
                    const std::vector<KeptPair>& kept, const std::vector<CalibrationPairInput>& inputs) {
   const int fewest = std::min(left.ids.size(), right.ids.size());
+  if (fewest < target.min_corners && target.whole_board)
+    return "board not wholly seen: " + std::to_string(left.ids.size()) + " corners left, " +
+           std::to_string(right.ids.size()) + " right, of " + std::to_string(target.min_corners) +
+           " (a checkerboard counts only whole)";
   if (fewest < target.min_corners)
     return "too few corners: " + std::to_string(left.ids.size()) + " left, " + std::to_string(right.ids.size()) +
            " right, need " + std::to_string(target.min_corners) + " in each";

@@ -46,6 +46,7 @@ struct ViewScreening {
   double max_edge_width_px = 3.5;  // views whose edges are wider (blur) are rejected
   double duplicate_px = 4.0;       // views whose corners moved less than this from a kept view are duplicates
   bool fix_k3 = true;              // estimate k1 k2 p1 p2 only
+  bool whole_board = false;        // min_corners is the whole board (a view has all or none): says so
 };
 
 // Finds the target in one grey image (an empty view when it is not there).
