@@ -8,11 +8,13 @@ packages=(
   libeigen3-dev libopencv-dev libopencv-contrib-dev liboctomap-dev
   libaravis-dev aravis-tools aravis-tools-cli libusb-1.0-0-dev
   libmodbus-dev libsystemd-dev libyaml-cpp-dev libcli11-dev libspdlog-dev libfmt-dev
-  libgtest-dev libgmock-dev libbenchmark-dev libzstd-dev liblz4-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libzstd-dev liblz4-dev libbz2-dev
   libnanoflann-dev libceres-dev
   clang-14 libclang-rt-14-dev
   python3 python3-numpy python3-matplotlib
   qemu-system-x86 busybox-static linux-image-amd64
+  g++-aarch64-linux-gnu qemu-user-static mmdebstrap file   # CI's aarch64 stage (tools/cross/build-aarch64.sh)
+  opencv-doc   # OpenCV's stereo checkerboard images, the real set of tests/unit/calib_checkerboard_test.cpp
 )
 # Node.js runs the independent MCAP reader in the tests; a machine that already has node
 # (e.g. from NodeSource, whose nodejs conflicts with Debian's npm) keeps its own.
