@@ -221,6 +221,11 @@ class CheckerboardOpencvDoc : public ::testing::Test {
       if (r.name == name) return &r;
     return nullptr;
   }
+  // The checks, run in one test: each ctest case is its own process and would calibrate again (13 s).
+  void CalibratesTheRealStereoSetToASubPixelError();
+  void RejectsTheCutAndTheRepeatedPairWithTheirReasons();
+  void RectifiedCornersLieOnTheSameRow();
+  void EachImportFormatGivesBackTheCalibration();
   static std::vector<CalibrationPairInput>* pairs_;
   static StereoCalibrationResult* result_;
   static std::size_t real_pairs_;
@@ -234,7 +239,7 @@ std::size_t CheckerboardOpencvDoc::real_pairs_ = 0;
 bool CheckerboardOpencvDoc::ok_ = false;
 std::string CheckerboardOpencvDoc::error_;
 
-TEST_F(CheckerboardOpencvDoc, CalibratesTheRealStereoSetToASubPixelError) {
+void CheckerboardOpencvDoc::CalibratesTheRealStereoSetToASubPixelError() {
   ASSERT_TRUE(ok_) << error_;
   const StereoCalibration& c = result_->calibration;
   std::printf(
@@ -257,7 +262,7 @@ TEST_F(CheckerboardOpencvDoc, CalibratesTheRealStereoSetToASubPixelError) {
   EXPECT_GT(std::abs(c.T[0]), 10.0 * std::hypot(c.T[1], c.T[2]));
 }
 
-TEST_F(CheckerboardOpencvDoc, RejectsTheCutAndTheRepeatedPairWithTheirReasons) {
+void CheckerboardOpencvDoc::RejectsTheCutAndTheRepeatedPairWithTheirReasons() {
   const CalibrationPairReport* cut = report("cut");
   const CalibrationPairReport* again = report("again");
   ASSERT_TRUE(cut && again);
@@ -267,7 +272,7 @@ TEST_F(CheckerboardOpencvDoc, RejectsTheCutAndTheRepeatedPairWithTheirReasons) {
   EXPECT_TRUE(has(again->reason, "duplicate view of left01.jpg")) << again->reason;
 }
 
-TEST_F(CheckerboardOpencvDoc, RectifiedCornersLieOnTheSameRow) {
+void CheckerboardOpencvDoc::RectifiedCornersLieOnTheSameRow() {
   // The use of the calibration: after rectification a corner is on the same row in both images.
   ASSERT_TRUE(ok_) << error_;
   const StereoCalibration& c = result_->calibration;
@@ -298,7 +303,7 @@ TEST_F(CheckerboardOpencvDoc, RectifiedCornersLieOnTheSameRow) {
   EXPECT_LT(p99, 1.0);
 }
 
-TEST_F(CheckerboardOpencvDoc, EachImportFormatGivesBackTheCalibration) {
+void CheckerboardOpencvDoc::EachImportFormatGivesBackTheCalibration() {
   // calibrate -> written as Kalibr, OpenCV stereo_calib and camera_info -> imported -> the same calibration.
   ASSERT_TRUE(ok_) << error_;
   const StereoCalibration& c = result_->calibration;
@@ -326,6 +331,25 @@ TEST_F(CheckerboardOpencvDoc, EachImportFormatGivesBackTheCalibration) {
     EXPECT_LT(cv::norm(g.right.dist, c.right.dist, cv::NORM_INF), 1e-12) << format;
     EXPECT_LT(cv::norm(cv::Mat(g.R), cv::Mat(c.R), cv::NORM_INF), 1e-12) << format;
     EXPECT_LT(cv::norm(cv::Mat(g.T), cv::Mat(c.T), cv::NORM_INF), 1e-12) << format;
+  }
+}
+
+TEST_F(CheckerboardOpencvDoc, CalibratesTheRealSetToASubPixelErrorAndEachFormatGivesItBack) {
+  {
+    SCOPED_TRACE("CalibratesTheRealStereoSetToASubPixelError");
+    CalibratesTheRealStereoSetToASubPixelError();
+  }
+  {
+    SCOPED_TRACE("RejectsTheCutAndTheRepeatedPairWithTheirReasons");
+    RejectsTheCutAndTheRepeatedPairWithTheirReasons();
+  }
+  {
+    SCOPED_TRACE("RectifiedCornersLieOnTheSameRow");
+    RectifiedCornersLieOnTheSameRow();
+  }
+  {
+    SCOPED_TRACE("EachImportFormatGivesBackTheCalibration");
+    EachImportFormatGivesBackTheCalibration();
   }
 }
 

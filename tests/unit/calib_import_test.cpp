@@ -2,7 +2,7 @@
 // of ROS camera_info YAMLs into deepnav's calibration file. The example files are written by hand from the
 // formats' documentation (Kalibr wiki "yaml formats"; OpenCV's FileStorage as stereo_calib writes it; the
 // camera_info YAML of camera_calibration_parsers). The round trip from a real calibration is in
-// calib_checkerboard_test.cpp (CheckerboardOpencvDoc.EachImportFormatGivesBackTheCalibration).
+// calib_checkerboard_test.cpp (CheckerboardOpencvDoc, its check EachImportFormatGivesBackTheCalibration).
 #include <unistd.h>
 
 #include <cmath>
