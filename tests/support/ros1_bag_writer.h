@@ -5,7 +5,8 @@
 // section (every connection record, then one chunk info record per chunk) at index_pos. A
 // connection record is written into the chunk where the connection is first used.
 // Usage: open(path, compression, chunk_size); write(topic, msg, log_time_ns)...; close().
-// closeAsCrashed() leaves the file as a recorder killed mid-recording does.
+// closeAsCrashed() leaves the file as a recorder killed mid-recording does. Chunks are written to
+// the file as they fill; close() rewrites the bag header with index_pos, as rosbag does.
 #include <bzlib.h>
 #include <lz4frame.h>
 
@@ -30,9 +31,11 @@ class Ros1BagWriter {
     path_ = path;
     compression_ = compression;
     chunk_size_ = chunk_size;
-    file_.assign(kMagic.begin(), kMagic.end());
-    appendBagHeader(0, 0, 0);
-    return std::ofstream(path_, std::ios::binary | std::ios::trunc).good();
+    out_.open(path_, std::ios::binary | std::ios::trunc);
+    pos_ = 0;
+    append(std::vector<uint8_t>(kMagic.begin(), kMagic.end()));
+    append(bagHeaderRecord(0, 0, 0));
+    return out_.good();
   }
 
   template <class Msg>
@@ -68,12 +71,12 @@ class Ros1BagWriter {
 
   bool close() {
     flushChunk();
-    const uint64_t index_pos = file_.size();
-    for (const auto& c : connections_) file_.insert(file_.end(), c.begin(), c.end());
+    const uint64_t index_pos = pos_;
+    for (const auto& c : connections_) append(c);
     for (const auto& info : chunk_infos_) appendChunkInfo(info);
     rewriteBagHeader(index_pos, uint32_t(connections_.size()), uint32_t(chunk_infos_.size()));
     index_pos_ = index_pos;
-    return save();
+    return finish();
   }
 
   // As a recorder killed mid-recording leaves the bag: no index section, index_pos 0 in the bag
@@ -82,22 +85,22 @@ class Ros1BagWriter {
   // data records; without, the open chunk is closed first.
   bool closeAsCrashed(bool unfinished_chunk) {
     if (unfinished_chunk && !chunk_.empty()) {
-      chunk_positions_.push_back(file_.size());
-      std::vector<uint8_t> header = chunkHeader(0);
-      appendRecord(&file_, header, {});
-      const std::vector<uint8_t> data = compress(chunk_);
-      file_.insert(file_.end(), data.begin(), data.end());
+      chunk_positions_.push_back(pos_);
+      std::vector<uint8_t> record;
+      appendRecord(&record, chunkHeader(0), {});
+      append(record);
+      append(compress(chunk_));
       chunk_.clear();
     } else {
       flushChunk();
     }
-    return save();
+    return finish();
   }
 
   const std::vector<uint64_t>& chunkPositions() const { return chunk_positions_; }
   const std::vector<size_t>& chunkMessageCounts() const { return chunk_message_counts_; }
   uint64_t indexPos() const { return index_pos_; }
-  size_t fileSize() const { return file_.size(); }
+  uint64_t fileSize() const { return pos_; }
 
  private:
   static constexpr std::string_view kMagic = "#ROSBAG V2.0\n";
@@ -171,13 +174,11 @@ class Ros1BagWriter {
     appendRecord(&record, header, std::vector<uint8_t>(kBagHeaderBytes - 8 - header.size(), ' '));
     return record;
   }
-  void appendBagHeader(uint64_t index_pos, uint32_t conns, uint32_t chunks) {
-    const std::vector<uint8_t> r = bagHeaderRecord(index_pos, conns, chunks);
-    file_.insert(file_.end(), r.begin(), r.end());
-  }
   void rewriteBagHeader(uint64_t index_pos, uint32_t conns, uint32_t chunks) {
     const std::vector<uint8_t> r = bagHeaderRecord(index_pos, conns, chunks);
-    std::memcpy(file_.data() + kMagic.size(), r.data(), r.size());
+    out_.seekp(std::streamoff(kMagic.size()));
+    out_.write(reinterpret_cast<const char*>(r.data()), std::streamsize(r.size()));
+    out_.seekp(std::streamoff(pos_));
   }
 
   std::string_view compressionName() const {
@@ -225,9 +226,10 @@ class Ros1BagWriter {
 
   void flushChunk() {
     if (chunk_.empty()) return;
-    ChunkInfo info{file_.size(), chunk_start_, chunk_end_, {}};
+    ChunkInfo info{pos_, chunk_start_, chunk_end_, {}};
     chunk_positions_.push_back(info.pos);
-    appendRecord(&file_, chunkHeader(uint32_t(chunk_.size())), compress(chunk_));
+    std::vector<uint8_t> record;
+    appendRecord(&record, chunkHeader(uint32_t(chunk_.size())), compress(chunk_));
     for (const auto& [conn, entries] : chunk_times_) {
       std::vector<uint8_t> header;
       field(&header, "op", {uint8_t(0x04)});
@@ -241,12 +243,13 @@ class Ros1BagWriter {
         data.insert(data.end(), tb.begin(), tb.end());
         data.insert(data.end(), ob.begin(), ob.end());
       }
-      appendRecord(&file_, header, data);
+      appendRecord(&record, header, data);
       info.counts[conn] = uint32_t(entries.size());
     }
     size_t messages = 0;
     for (const auto& [conn, n] : info.counts) messages += n;
     chunk_message_counts_.push_back(messages);
+    append(record);
     chunk_infos_.push_back(info);
     chunk_.clear();
     chunk_times_.clear();
@@ -267,19 +270,25 @@ class Ros1BagWriter {
       data.insert(data.end(), c.begin(), c.end());
       data.insert(data.end(), k.begin(), k.end());
     }
-    appendRecord(&file_, header, data);
+    std::vector<uint8_t> record;
+    appendRecord(&record, header, data);
+    append(record);
   }
 
-  bool save() const {
-    std::ofstream out(path_, std::ios::binary | std::ios::trunc);
-    out.write(reinterpret_cast<const char*>(file_.data()), std::streamsize(file_.size()));
-    return out.good();
+  void append(const std::vector<uint8_t>& bytes) {
+    out_.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+    pos_ += bytes.size();
+  }
+  bool finish() {
+    out_.close();
+    return !out_.fail();
   }
 
   std::string path_;
   Compression compression_ = Compression::kNone;
   size_t chunk_size_ = 0;
-  std::vector<uint8_t> file_;
+  std::ofstream out_;
+  uint64_t pos_ = 0;
   std::vector<uint8_t> chunk_;
   int64_t chunk_start_ = 0;
   int64_t chunk_end_ = 0;

@@ -217,6 +217,18 @@ TEST_F(RosbagMalformed, BagHeaderFieldMissing) {
   expectOpenFails(path_, {": byte 13: ", "bag header record", "'index_pos' is missing"});
 }
 
+TEST_F(RosbagMalformed, EncryptedBagIsRefused) {
+  // rosbag's encrypted bags carry an 'encryptor' field in the bag header: put one in place of
+  // chunk_count (same field length, 16 bytes).
+  const auto it = std::search(bytes_.begin(), bytes_.end(), std::begin("chunk_count="),
+                              std::end("chunk_count=") - 1);
+  ASSERT_NE(it, bytes_.end());
+  const std::string_view field = "encryptor=AesCbc";
+  std::copy(field.begin(), field.end(), it);
+  save();
+  expectOpenFails(path_, {": byte 13: ", "encrypted", "'encryptor'"});
+}
+
 TEST_F(RosbagMalformed, UnknownCompression) {
   const uint64_t chunk = writer_.chunkPositions()[1];
   replaceOnce(&bytes_, chunk, "compression=bz2", "compression=zst");

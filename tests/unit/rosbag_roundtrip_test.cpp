@@ -175,6 +175,29 @@ TEST(RosbagRoundTripEmpty, ClosedBagWithoutMessagesHasNoTopics) {
   EXPECT_TRUE(ok) << error;
 }
 
+// A message of a standard type (md5sum right) but too short for it: the container delivers its
+// bytes, the decoder refuses them.
+TEST(RosbagRoundTripShort, MessageTooShortForItsTypeIsDeliveredButDoesNotDecode) {
+  const std::string path = tempBagPath("short.bag");
+  Ros1BagWriter writer;
+  ASSERT_TRUE(writer.open(path, Compression::kLz4));
+  std::vector<uint8_t> imu = encodeRos1(sampleImu(0));
+  imu.resize(imu.size() - 8);  // the last covariance element missing
+  writer.writeRaw("/imu", Ros1Type<ros::Imu>::kName, Ros1Type<ros::Imu>::kMd5,
+                  Ros1Type<ros::Imu>::definition(), imu, 1000);
+  ASSERT_TRUE(writer.close());
+  BagReader reader;
+  std::string error;
+  ASSERT_TRUE(reader.open(path, &error)) << error;
+  bool ok = false;
+  const std::vector<Delivered> got = readAll(reader, &ok, &error);
+  ASSERT_TRUE(ok) << error;
+  ASSERT_EQ(got.size(), 1u);
+  EXPECT_EQ(got[0].data, imu);
+  ros::Imu decoded;
+  EXPECT_FALSE(decodeRos1(got[0].data.data(), got[0].data.size(), &decoded));
+}
+
 // The md5sums the reader checks against are those of the standard definitions (the writer's,
 // computed separately by the ROS md5 rule).
 TEST(RosbagMd5, StandardTableMatchesTheDefinitions) {
