@@ -37,10 +37,21 @@ fs::path sharedDataDir() {
   return fs::path(DEEPNAV_SOURCE_DIR) / ".." / "shared" / "data";
 }
 
+// Scratch folders under the system's temp directory, removed when the binary ends.
+struct ScratchDirs {
+  std::vector<fs::path> dirs;
+  ~ScratchDirs() {
+    std::error_code ec;
+    for (const fs::path& d : dirs) fs::remove_all(d, ec);
+  }
+};
+
 fs::path scratchDir(const std::string& name) {
+  static ScratchDirs scratch;
   const fs::path dir = fs::temp_directory_path() / ("deepnav_euroc_" + name + "_" + std::to_string(::getpid()));
   fs::remove_all(dir);
   fs::create_directories(dir);
+  scratch.dirs.push_back(dir);
   return dir;
 }
 
