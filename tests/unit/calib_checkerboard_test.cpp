@@ -124,11 +124,15 @@ TEST(CheckerboardView, TheRightViewIsNumberedAsTheLeft) {
   TargetView right = detectCheckerboardView(renderBoard(target, tiltedView(1.59), {640, 480}), target);
   ASSERT_EQ(left.corners_px.size(), 54u);
   ASSERT_EQ(right.corners_px.size(), 54u);
-  std::printf("first corner before alignment: left (%.1f, %.1f), right (%.1f, %.1f)\n", left.corners_px[0].x,
-              left.corners_px[0].y, right.corners_px[0].x, right.corners_px[0].y);
-  // Rows near vertical: the image rule may number the two views differently; the alignment agrees them.
+  // Rows near vertical: the image rule may number the two views half a turn apart; make it so.
+  std::reverse(right.corners_px.begin(), right.corners_px.end());
+  ASSERT_GT(cv::norm(left.corners_px[0] - right.corners_px[0]), 100.0);
   EXPECT_EQ(checkerboardAlignPair(left, &right, target), "");
   for (int id = 0; id < 54; ++id) EXPECT_LT(cv::norm(left.corners_px[id] - right.corners_px[id]), 15.0) << id;
+  // A right view a quarter turn from the left one cannot be numbered alike: the pair is refused.
+  TargetView turned = detectCheckerboardView(renderBoard(target, tiltedView(1.55 + 1.5708), {640, 480}), target);
+  ASSERT_EQ(turned.corners_px.size(), 54u);
+  EXPECT_TRUE(has(checkerboardAlignPair(left, &turned, target), "turned more than 60 deg from each other"));
 }
 
 TEST(CheckerboardTargetFile, ReadsACheckerboardTargetAndNamesEachBadKey) {
