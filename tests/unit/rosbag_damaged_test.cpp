@@ -217,6 +217,52 @@ TEST_F(RosbagMalformed, BagHeaderFieldMissing) {
   expectOpenFails(path_, {": byte 13: ", "bag header record", "'index_pos' is missing"});
 }
 
+// The n-th occurrence of `what` at or after `from`.
+std::vector<uint8_t>::iterator findNth(std::vector<uint8_t>* bytes, uint64_t from,
+                                       std::string_view what, int n) {
+  auto it = bytes->begin() + std::ptrdiff_t(from);
+  for (int i = 0; i <= n; ++i) {
+    if (i > 0) ++it;
+    it = std::search(it, bytes->end(), what.begin(), what.end());
+    if (it == bytes->end()) break;
+  }
+  return it;
+}
+
+TEST_F(RosbagMalformed, DamagedIndexFallsBackToScanning) {
+  const auto it = findNth(&bytes_, writer_.indexPos(), "chunk_pos=", 0);
+  ASSERT_NE(it, bytes_.end());
+  *(it + 8) = 'z';  // "chunk_poz=": the chunk info lacks its chunk_pos
+  save();
+  BagReader reader;
+  std::string error;
+  ASSERT_TRUE(reader.open(path_, &error)) << error;
+  EXPECT_NE(reader.notice().find("index not used"), std::string::npos) << reader.notice();
+  EXPECT_NE(reader.notice().find("'chunk_pos' is missing"), std::string::npos) << reader.notice();
+  bool ok = false;
+  const std::vector<Delivered> got = readAll(reader, &ok, &error);
+  EXPECT_TRUE(ok) << error;
+  EXPECT_EQ(got.size(), 48u);
+}
+
+TEST_F(RosbagMalformed, ChunkInfoTimesThatLieAreAnError) {
+  // Chunk 1's start_time moved to 1 s, after all its messages (which are in the first 24 us).
+  const auto it = findNth(&bytes_, writer_.indexPos(), "start_time=", 1);
+  ASSERT_NE(it, bytes_.end());
+  *(it + 11) = 1;
+  save();
+  BagReader reader;
+  std::string error;
+  ASSERT_TRUE(reader.open(path_, &error)) << error;
+  bool ok = true;
+  readAll(reader, &ok, &error);
+  EXPECT_FALSE(ok);
+  EXPECT_NE(error.find(path_ + ": byte " + std::to_string(writer_.chunkPositions()[1]) + ": "),
+            std::string::npos)
+      << error;
+  EXPECT_NE(error.find("the index is inconsistent"), std::string::npos) << error;
+}
+
 TEST_F(RosbagMalformed, EncryptedBagIsRefused) {
   // rosbag's encrypted bags carry an 'encryptor' field in the bag header: put one in place of
   // chunk_count (same field length, 16 bytes).
