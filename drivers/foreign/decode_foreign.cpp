@@ -1,10 +1,7 @@
 #include "drivers/foreign/decode_foreign.h"
 
 #include "drivers/cdr/ros_msg_codec.h"
-#if __has_include("drivers/rosbag/ros1_msg_codec.h")
 #include "drivers/rosbag/ros1_msg_codec.h"
-#define DEEPNAV_HAS_ROSBAG 1
-#endif
 
 namespace deepnav::foreign {
 namespace {
@@ -15,11 +12,7 @@ bool decodeAny(const ForeignMessage& m, Msg* out) {
     case Serialization::kCdr:
       return ros::decode(m.data, m.size, out);
     case Serialization::kRos1:
-#ifdef DEEPNAV_HAS_ROSBAG
       return rosbag::decodeRos1(m.data, m.size, out);
-#else
-      return false;
-#endif
   }
   return false;
 }

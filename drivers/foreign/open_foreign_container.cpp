@@ -4,10 +4,7 @@
 #include <fstream>
 
 #include "drivers/foreign/mcap_container.h"
-#if __has_include("drivers/rosbag/bag_reader.h")
 #include "drivers/rosbag/bag_reader.h"
-#define DEEPNAV_HAS_ROSBAG 1
-#endif
 
 namespace deepnav::foreign {
 namespace {
@@ -35,14 +32,7 @@ std::unique_ptr<ForeignContainer> openForeignContainer(const std::string& path, 
   const auto got = static_cast<std::size_t>(in.gcount());
   const auto starts = [&](const char* magic, std::size_t n) { return got >= n && std::memcmp(head, magic, n) == 0; };
   if (starts(kMcapMagic, sizeof(kMcapMagic) - 1)) return openAs<McapContainer>(path, error);
-  if (starts(kBagMagic, sizeof(kBagMagic) - 1)) {
-#ifdef DEEPNAV_HAS_ROSBAG
-    return openAs<rosbag::BagReader>(path, error);
-#else
-    if (error) *error = path + ": a ROS 1 bag, and this build has no ROS 1 bag reader";
-    return nullptr;
-#endif
-  }
+  if (starts(kBagMagic, sizeof(kBagMagic) - 1)) return openAs<rosbag::BagReader>(path, error);
   if (error) {
     *error = path + ": neither a ROS 2 MCAP recording (magic 0x89 MCAP0) nor a ROS 1 bag (#ROSBAG V2.0)";
     if (got >= 13 && std::memcmp(head, "#ROSBAG V", 9) == 0) *error += ": bag format '" + std::string(head, 12) + "'";

@@ -17,6 +17,7 @@
 #include "drivers/foreign/frame_conventions.h"
 #include "drivers/replay/recording_reader.h"
 #include "tests/support/foreign_mcap_writer.h"
+#include "tests/support/ros1_bag_writer.h"
 #include "tests/support/test_dive.h"
 
 namespace deepnav {
@@ -48,12 +49,13 @@ struct Written {
   int imu = 0, attitude = 0, heading = 0, dvl = 0, dvl_invalid = 0, depth = 0, frames = 0;
 };
 
-// The dive as foreign drivers would have published it.
-Written writeForeign(const std::string& dive, const std::string& out, const Eigen::Quaterniond& q_robot_imu) {
+// The dive as foreign drivers would have published it, through a writer with write(topic, msg, log_time_ns):
+// a ROS 2 MCAP (testing::ForeignMcapWriter) or a ROS 1 bag (testsupport::Ros1BagWriter).
+template <typename Writer>
+Written writeForeign(const std::string& dive, Writer& w, const Eigen::Quaterniond& q_robot_imu) {
   RecordingReader reader;
   std::string error;
   EXPECT_TRUE(reader.open(dive, &error)) << error;
-  testing::ForeignMcapWriter w(out);
   Written n;
   reader.forEach(true, [&](const ReplayEvent& e) {
     const std::int64_t log_ns = (e.t_us + kOffsetUs) * 1000;
@@ -129,7 +131,6 @@ Written writeForeign(const std::string& dive, const std::string& out, const Eige
     }
     return true;
   }, &error);
-  w.close();
   return n;
 }
 
@@ -158,6 +159,23 @@ ReplaySummary replay(const std::string& input, const std::string& out, const std
   return s;
 }
 
+// The converted run's estimate against the original's, tick by tick (its clock is 1000 s later).
+void expectSameTrajectory(const ReplaySummary& original, const ReplaySummary& converted, const char* what) {
+  ASSERT_EQ(converted.estimate.size(), original.estimate.size());
+  ASSERT_FALSE(original.estimate.empty());
+  double worst_m = 0.0, worst_dt_s = 0.0;
+  for (std::size_t i = 0; i < original.estimate.size(); ++i) {
+    worst_dt_s = std::max(worst_dt_s, std::abs(converted.estimate[i].t_s - 1000.0 - original.estimate[i].t_s));
+    worst_m = std::max(worst_m, (converted.estimate[i].p_robot_in_odom_m - original.estimate[i].p_robot_in_odom_m).norm());
+  }
+  std::printf("%s: ticks %zu, frames %llu, vision %llu; against the original: largest position difference %.3g m, "
+              "time %.3g s\n",
+              what, original.estimate.size(), static_cast<unsigned long long>(converted.frames),
+              static_cast<unsigned long long>(converted.inputs.vision), worst_m, worst_dt_s);
+  EXPECT_LT(worst_dt_s, 1e-6);
+  EXPECT_LT(worst_m, 1e-3);
+}
+
 class ForeignReplay : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
@@ -166,14 +184,22 @@ class ForeignReplay : public ::testing::Test {
     std::string error;
     ASSERT_TRUE(loadVehicleSetup(kBoard, &setup, &error)) << error;
     foreign_ = ::testing::TempDir() + "foreign_dive_ros2.mcap";
-    written_ = writeForeign(dive_, foreign_, setup.config.ekf.q_robot_imu);
+    testing::ForeignMcapWriter mcap(foreign_);
+    written_ = writeForeign(dive_, mcap, setup.config.ekf.q_robot_imu);
+    mcap.close();
+    bag_ = ::testing::TempDir() + "foreign_dive_ros1.bag";
+    testsupport::Ros1BagWriter bag;
+    ASSERT_TRUE(bag.open(bag_, testsupport::Ros1BagWriter::Compression::kLz4));
+    const Written in_bag = writeForeign(dive_, bag, setup.config.ekf.q_robot_imu);
+    ASSERT_TRUE(bag.close());
+    ASSERT_EQ(in_bag.frames, written_.frames);
     map_ = ::testing::TempDir() + "foreign_map.yaml";
     std::ofstream(map_) << kMap;
   }
-  static std::string dive_, foreign_, map_;
+  static std::string dive_, foreign_, bag_, map_;
   static Written written_;
 };
-std::string ForeignReplay::dive_, ForeignReplay::foreign_, ForeignReplay::map_;
+std::string ForeignReplay::dive_, ForeignReplay::foreign_, ForeignReplay::bag_, ForeignReplay::map_;
 Written ForeignReplay::written_;
 
 TEST_F(ForeignReplay, ARos2RecordingOfTheDiveGivesTheTrajectoryOfTheOriginal) {
@@ -190,19 +216,16 @@ TEST_F(ForeignReplay, ARos2RecordingOfTheDiveGivesTheTrajectoryOfTheOriginal) {
   EXPECT_EQ(converted.inputs.depth, original.inputs.depth);
   EXPECT_EQ(converted.inputs.dvl + static_cast<std::uint64_t>(written_.dvl_invalid), original.inputs.dvl);
   EXPECT_EQ(converted.read.incomplete_frames, 0u);
-  ASSERT_EQ(converted.estimate.size(), original.estimate.size());
-  ASSERT_FALSE(original.estimate.empty());
-  double worst_m = 0.0, worst_dt_s = 0.0;
-  for (std::size_t i = 0; i < original.estimate.size(); ++i) {
-    worst_dt_s = std::max(worst_dt_s, std::abs(converted.estimate[i].t_s - 1000.0 - original.estimate[i].t_s));
-    worst_m = std::max(worst_m, (converted.estimate[i].p_robot_in_odom_m - original.estimate[i].p_robot_in_odom_m).norm());
-  }
-  std::printf("ticks %zu, frames %llu, vision %llu; converted vs original: largest position difference %.3g m, "
-              "time %.3g s\n",
-              original.estimate.size(), static_cast<unsigned long long>(converted.frames),
-              static_cast<unsigned long long>(converted.inputs.vision), worst_m, worst_dt_s);
-  EXPECT_LT(worst_dt_s, 1e-6);
-  EXPECT_LT(worst_m, 1e-3);
+  expectSameTrajectory(original, converted, "ROS 2 MCAP");
+}
+
+TEST_F(ForeignReplay, ARos1BagOfTheDiveGivesTheTrajectoryOfTheOriginal) {
+  const ReplaySummary original = replay(dive_, ::testing::TempDir() + "foreign_original_b", "", kBoard);
+  const ReplaySummary converted = replay(bag_, ::testing::TempDir() + "foreign_converted_bag", map_, kBoard);
+  EXPECT_EQ(converted.frames, original.frames);
+  EXPECT_EQ(converted.inputs.imu, original.inputs.imu);
+  EXPECT_EQ(converted.read.bad_messages, 0u);
+  expectSameTrajectory(original, converted, "ROS 1 bag (lz4 chunks)");
 }
 
 TEST_F(ForeignReplay, ItsOutputRecordingReplaysBitForBitWithAPlainReplay) {
@@ -228,7 +251,9 @@ TEST_F(ForeignReplay, TheCommandLineRunsItAndNamesAMissingTopic) {
   const std::string log = ::testing::TempDir() + "foreign_cli.log";
   const std::string cmd = bin + " replay --topics " + map_ + " --board " + kBoard + " " + foreign_ + " --out " + out +
                           " > " + log + " 2>&1";
-  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  const int rc = std::system(cmd.c_str());
+  std::ifstream first_log(log);
+  ASSERT_EQ(rc, 0) << cmd << "\n" << std::string(std::istreambuf_iterator<char>(first_log), {});
   EXPECT_TRUE(std::filesystem::exists(out + "/replay.mcap"));
   const std::string bad_map = ::testing::TempDir() + "foreign_bad_map.yaml";
   std::ofstream(bad_map) << "topics:\n  /imu/data: {sensor: imu}\n";

@@ -19,6 +19,7 @@
 #include "drivers/foreign/mcap_container.h"
 #include "drivers/foreign/open_foreign_container.h"
 #include "tests/support/foreign_mcap_writer.h"
+#include "tests/support/ros1_bag_writer.h"
 
 namespace deepnav::foreign {
 namespace {
@@ -81,9 +82,8 @@ ros::CompressedImage pngImage(std::int64_t t_ns, const cv::Mat& grey) {
 // Half a second of an FRD AHRS (10 Hz) heading 30 deg, an ENU DVL (TwistWithCovarianceStamped), an FRD DVL
 // (TwistStamped), a pressure sensor, an FRD magnetometer and a stereo pair (raw left, PNG right, 2 ms apart),
 // each message logged 1 ms after its stamp.
-std::string writeSensors(const std::string& name) {
-  const std::string path = tempPath(name);
-  testing::ForeignMcapWriter w(path);
+template <typename Writer>
+void writeSensorsTo(Writer& w) {
   for (int i = 0; i < 5; ++i) {
     const std::int64_t t = kT0Ns + i * 100'000'000LL;
     w.write("/ahrs", imuAt(t, zyx(30, 10, 5)), t + 1'000'000);  // NED heading 30, pitch up 10, roll 5
@@ -113,7 +113,23 @@ std::string writeSensors(const std::string& name) {
     w.write("/left", rawImage(t + 50'000'000, pattern(i)), t + 51'000'000);
     w.write("/right", pngImage(t + 52'000'000, pattern(100 + i)), t + 53'000'000);
   }
+}
+
+std::string writeSensors(const std::string& name) {
+  const std::string path = tempPath(name);
+  testing::ForeignMcapWriter w(path);
+  writeSensorsTo(w);
   w.close();
+  return path;
+}
+
+// The same messages in a ROS 1 bag (lz4 chunks small enough that they overlap in time).
+std::string writeSensorsBag(const std::string& name) {
+  const std::string path = tempPath(name);
+  testsupport::Ros1BagWriter w;
+  EXPECT_TRUE(w.open(path, testsupport::Ros1BagWriter::Compression::kLz4, 16 * 1024));
+  writeSensorsTo(w);
+  EXPECT_TRUE(w.close());
   return path;
 }
 
@@ -229,6 +245,31 @@ TEST(ForeignReader, EveryTypeConvertsToTheHandComputedSamples) {
   EXPECT_EQ(reader.stats().bad_messages, 0u);
   EXPECT_EQ(reader.stats().incomplete_frames, 0u);
   EXPECT_TRUE(reader.warnings().empty()) << reader.warnings().front();
+}
+
+TEST(ForeignReader, TheSameMessagesInARos1BagGiveTheSameSamples) {
+  const TopicMap map = parseMap(kMapText);
+  ForeignReplayReader from_mcap, from_bag;
+  std::string error;
+  ASSERT_TRUE(from_mcap.open(writeSensors("same.mcap"), map, &error)) << error;
+  ASSERT_TRUE(from_bag.open(writeSensorsBag("same.bag"), map, &error)) << error;
+  from_mcap.setVehicle(smallCamera());
+  from_bag.setVehicle(smallCamera());
+  Collected a, b;
+  ASSERT_TRUE(collect(from_mcap, &a, &error)) << error;
+  ASSERT_TRUE(collect(from_bag, &b, &error)) << error;
+  EXPECT_EQ(b.times, a.times);
+  ASSERT_EQ(b.imu.size(), a.imu.size());
+  for (std::size_t i = 0; i < a.imu.size(); ++i) EXPECT_EQ(b.imu[i].f_imu_mps2, a.imu[i].f_imu_mps2);
+  ASSERT_EQ(b.heading.size(), a.heading.size());
+  for (std::size_t i = 0; i < a.heading.size(); ++i) EXPECT_EQ(b.heading[i].heading_rad, a.heading[i].heading_rad);
+  ASSERT_EQ(b.dvl.size(), a.dvl.size());
+  for (std::size_t i = 0; i < a.dvl.size(); ++i) EXPECT_EQ(b.dvl[i].v_dvl_mps, a.dvl[i].v_dvl_mps);
+  ASSERT_EQ(b.depth.size(), 5u);
+  EXPECT_EQ(b.depth[3].depth_m, a.depth[3].depth_m);
+  ASSERT_EQ(b.frames.size(), 5u);
+  EXPECT_EQ(cv::norm(b.frames[4].right, a.frames[4].right, cv::NORM_INF), 0.0);
+  EXPECT_EQ(from_bag.stats().bad_messages, 0u);
 }
 
 TEST(ForeignReader, AnEnuAhrsIsTakenAsIsAndLogTimeCanStampIt) {
