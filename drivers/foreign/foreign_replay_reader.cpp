@@ -40,8 +40,9 @@ std::string withoutValueReason(const TopicMapping& m) {
   if (m.has(ForeignSensor::kCompass)) {
     return " (no attitude within max_attitude_age_ms to level the magnetometer, or no horizontal field)";
   }
-  if (m.has(ForeignSensor::kAttitude) || m.has(ForeignSensor::kHeading)) {
-    return " (no orientation: orientation_covariance[0] = -1 or not a unit quaternion; or a non-finite value)";
+  if (m.has(ForeignSensor::kImu) || m.has(ForeignSensor::kAttitude) || m.has(ForeignSensor::kHeading)) {
+    return " (a field not provided: its covariance[0] = -1 (REP-145); an orientation that is not a unit "
+           "quaternion; or a non-finite value)";
   }
   return " (a non-finite value)";
 }

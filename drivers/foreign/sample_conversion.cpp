@@ -38,6 +38,8 @@ TimeUs stampUs(const ros::Time& t) {
 }
 
 bool imuSampleFromRos(const ros::Imu& m, const TopicMapping& map, TimeUs t_us, ImuSample* out) {
+  // REP-145: covariance[0] = -1 says the field is not provided (an orientation-only AHRS message).
+  if (m.angular_velocity_covariance[0] == -1.0 || m.linear_acceleration_covariance[0] == -1.0) return false;
   ImuSample s;
   s.t_us = t_us;
   s.w_imu_radps = bodyVectorToFlu(toEigen(m.angular_velocity), map.convention);

@@ -18,6 +18,7 @@ namespace deepnav::foreign {
 // Header stamp in microseconds (truncated toward zero).
 TimeUs stampUs(const ros::Time& t);
 
+// False when the rates or the specific force are not provided (REP-145: their covariance[0] = -1).
 bool imuSampleFromRos(const ros::Imu& m, const TopicMapping& map, TimeUs t_us, ImuSample* out);
 
 // The robot's attitude from the sensor's orientation: q_odom_robot = q_odom_sensor * q_robot_sensor^-1

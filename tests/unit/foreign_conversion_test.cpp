@@ -94,7 +94,7 @@ TEST(ForeignConversion, EnuAttitudeIsUsedAsIsAndTheMountingIsTakenOut) {
   EXPECT_NEAR(h.heading_rad, 210 * kDeg, 1e-12);
 }
 
-TEST(ForeignConversion, AnImuWithoutOrientationGivesNoAttitude) {
+TEST(ForeignConversion, FieldsAnImuDoesNotProvideGiveNoSample) {
   ros::Imu m = imuWithOrientation(Eigen::Quaterniond::Identity());
   m.orientation_covariance[0] = -1.0;  // REP-145: no orientation estimate
   AttitudeSample a;
@@ -102,6 +102,11 @@ TEST(ForeignConversion, AnImuWithoutOrientationGivesNoAttitude) {
   ImuSample s;
   ASSERT_TRUE(imuSampleFromRos(m, mapping(FrameConvention::kEnuFlu), 1, &s));
   EXPECT_FALSE(s.has_orientation);
+  m.angular_velocity_covariance[0] = -1.0;  // an orientation-only message: no rates
+  EXPECT_FALSE(imuSampleFromRos(m, mapping(FrameConvention::kEnuFlu), 1, &s));
+  m.angular_velocity_covariance[0] = 0.0;
+  m.linear_acceleration_covariance[0] = -1.0;
+  EXPECT_FALSE(imuSampleFromRos(m, mapping(FrameConvention::kEnuFlu), 1, &s));
   m.orientation_covariance[0] = 0.0;
   m.orientation = {0, 0, 0, 0};  // not a rotation
   EXPECT_FALSE(attitudeSampleFromRos(m, mapping(FrameConvention::kEnuFlu), Eigen::Quaterniond::Identity(), 1, &a));
