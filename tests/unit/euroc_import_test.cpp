@@ -351,6 +351,38 @@ TEST(EurocImport, RecordingHoldsPairsRotatedImuTruthAndCalibration) {
   EXPECT_EQ(truth, 2);
 }
 
+TEST(EurocImport, ABoardGoesIntoTheRecordingAndMustMatchTheImages) {
+  const fs::path root = makeFolder("board");
+  ImportEurocOptions o;
+  o.dir = root.string();
+  o.out_path = (root / "rec.mcap").string();
+  o.calibration_out = (root / "calib.yaml").string();
+  o.quiet = true;
+  ASSERT_EQ(runImportEurocCommand(o), 0);  // writes the calibration the board names
+  writeText(root / "board.yaml", "camera:\n  width_px: 64\n  height_px: 48\n  calibration_file: calib.yaml\nvision:\n  dense_disparities: 16\n");
+  o.board_path = (root / "board.yaml").string();
+  o.out_path = (root / "with_board.mcap").string();
+  ASSERT_EQ(runImportEurocCommand(o), 0);
+  RecordingReader reader;
+  std::string error;
+  ASSERT_TRUE(reader.open(o.out_path, &error)) << error;
+  ASSERT_NE(reader.metadata("deepnav.board"), nullptr);
+  VehicleSetup stored;
+  bool found = false;
+  ASSERT_TRUE(setupFromMetadata(reader.metadata("deepnav.board"), reader.metadata("deepnav.panel"), "stored", &stored,
+                                &error, &found, reader.metadata(kCalibrationMetadata)))
+      << error;
+  EXPECT_TRUE(found);
+  EXPECT_TRUE(stored.rectify);
+  // A board for other images is refused, naming its keys (with calibration_file the board's own loader
+  // refuses it first: the calibration is for 64 x 48).
+  writeText(root / "board.yaml", "camera:\n  width_px: 752\n  height_px: 480\n");
+  testing::internal::CaptureStderr();
+  EXPECT_EQ(runImportEurocCommand(o), 1);
+  const std::string err = testing::internal::GetCapturedStderr();
+  EXPECT_NE(err.find("camera.width_px/height_px/channels are 752x480x1"), std::string::npos) << err;
+}
+
 TEST(EurocImport, BadInputFailsWithExitCodeOneAndNoRecording) {
   const fs::path root = makeFolder("bad");
   writeText(root / "mav0" / "cam1" / "sensor.yaml", "%YAML:1.0\nsensor_type: camera\nT_BS:\n  cols: 4\n");
