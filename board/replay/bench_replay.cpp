@@ -404,9 +404,11 @@ bool runBenchReplayFrom(const ReplayOptions& o, ReplayEventSource& reader, const
     summary->truth_T_odom_panel = truthPanelFromMetadata(reader.metadata(kTruthPanelMetadata), &panel_error);
   }
   if (o.progress) {
-    std::fprintf(stderr, "replay: %s (%s)\n", o.input_path.c_str(),
-                 summary->reproduce ? "recorded run: re-running its ticks and comparing outputs"
-                                    : "sensor log: running the loop and vision on it");
+    const std::string what = !o.topics_path.empty() ? "foreign recording through " + o.topics_path +
+                                                          ": running the loop and vision on it"
+                             : summary->reproduce ? "recorded run: re-running its ticks and comparing outputs"
+                                                  : "sensor log: running the loop and vision on it";
+    std::fprintf(stderr, "replay: %s (%s)\n", o.input_path.c_str(), what.c_str());
   }
   const TimeUs wall_start = monotonicUs();
   const bool ok = reader.forEach(

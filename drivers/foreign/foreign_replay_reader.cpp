@@ -36,15 +36,18 @@ const char* typesRead(ForeignSensor s) {
   return "?";
 }
 
-std::string withoutValueReason(const TopicMapping& m) {
-  if (m.has(ForeignSensor::kCompass)) {
-    return " (no attitude within max_attitude_age_ms to level the magnetometer, or no horizontal field)";
+std::string withoutValueReason(ForeignSensor sensor) {
+  switch (sensor) {
+    case ForeignSensor::kImu:
+      return " (rates or specific force not provided: their covariance[0] = -1, REP-145; or not finite)";
+    case ForeignSensor::kAttitude:
+    case ForeignSensor::kHeading:
+      return " (no orientation: orientation_covariance[0] = -1, REP-145; or not a unit quaternion)";
+    case ForeignSensor::kCompass:
+      return " (no attitude within max_attitude_age_ms to level the field, or no horizontal field)";
+    default:
+      return " (a non-finite value)";
   }
-  if (m.has(ForeignSensor::kImu) || m.has(ForeignSensor::kAttitude) || m.has(ForeignSensor::kHeading)) {
-    return " (a field not provided: its covariance[0] = -1 (REP-145); an orientation that is not a unit "
-           "quaternion; or a non-finite value)";
-  }
-  return " (a non-finite value)";
 }
 
 }  // namespace
@@ -216,7 +219,6 @@ bool ForeignReplayReader::handleImu(TopicState& s, const ForeignMessage& m, cons
   TimeUs t = 0;
   if (!sampleTime(s, m, msg.header.stamp, &t, error)) return false;
   const Eigen::Quaterniond q_robot = s.map->q_robot_sensor.value_or(vehicle_.q_robot_imu);
-  bool made_all = true;
   for (const ForeignSensor sensor : kImuSensors) {
     if (!s.map->has(sensor) || *stop) continue;
     InputSample sample;
@@ -238,12 +240,13 @@ bool ForeignReplayReader::handleImu(TopicState& s, const ForeignMessage& m, cons
       made = headingSampleFromRos(msg, *s.map, q_robot, t, &v);
       sample = v;
     }
-    made_all = made_all && made;
-    if (!made) continue;
+    if (!made) {
+      ++s.counts.without_value[static_cast<std::size_t>(sensor)];
+      continue;
+    }
     ++s.counts.samples;
     if (!emit(sample, cb)) *stop = true;
   }
-  if (!made_all) ++s.counts.without_value;
   return true;
 }
 
@@ -264,7 +267,7 @@ bool ForeignReplayReader::handleDvl(TopicState& s, const ForeignMessage& m, cons
     made = dvlSampleFromRos(msg.twist.linear, nullptr, *s.map, t, &v);
   }
   if (!made) {
-    ++s.counts.without_value;
+    ++s.counts.without_value[static_cast<std::size_t>(ForeignSensor::kDvl)];
     return true;
   }
   ++s.counts.samples;
@@ -280,7 +283,7 @@ bool ForeignReplayReader::handleDepth(TopicState& s, const ForeignMessage& m, co
   if (!sampleTime(s, m, msg.header.stamp, &t, error)) return false;
   DepthSample v;
   if (!depthSampleFromRos(msg, *s.map, t, &v)) {
-    ++s.counts.without_value;
+    ++s.counts.without_value[static_cast<std::size_t>(ForeignSensor::kDepth)];
     return true;
   }
   ++s.counts.samples;
@@ -298,7 +301,7 @@ bool ForeignReplayReader::handleCompass(TopicState& s, const ForeignMessage& m, 
   HeadingSample v;
   if (!have_attitude_ || age > s.map->max_attitude_age_us ||
       !compassHeadingFromRos(msg, *s.map, s.map->q_robot_sensor.value_or(vehicle_.q_robot_imu), attitude_, t, &v)) {
-    ++s.counts.without_value;
+    ++s.counts.without_value[static_cast<std::size_t>(ForeignSensor::kCompass)];
     return true;
   }
   ++s.counts.samples;
@@ -353,10 +356,15 @@ void ForeignReplayReader::summarise() {
     const TopicState& s = topics_.at(mapping.topic);
     if (s.counts.messages == 0) {
       warnings_.push_back(where(s) + ": no message");
-    } else if (s.counts.without_value > 0) {
-      warnings_.push_back(where(s) + ": " + std::to_string(s.counts.without_value) + " of " +
-                          std::to_string(s.counts.messages) + " messages gave no sample" +
-                          withoutValueReason(mapping));
+      continue;
+    }
+    for (int i = 0; i < static_cast<int>(ForeignSensor::kCount); ++i) {
+      const std::uint64_t missed = s.counts.without_value[static_cast<std::size_t>(i)];
+      if (missed == 0) continue;
+      const auto sensor = static_cast<ForeignSensor>(i);
+      warnings_.push_back(where(s) + ": no " + std::string(sensorName(sensor)) + " sample from " +
+                          std::to_string(missed) + " of " + std::to_string(s.counts.messages) + " messages" +
+                          withoutValueReason(sensor));
     }
   }
 }

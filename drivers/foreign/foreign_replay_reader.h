@@ -1,4 +1,5 @@
 #pragma once
+#include <array>
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -30,8 +31,9 @@ struct ForeignTopicCounts {
   std::uint64_t messages = 0;
   std::uint64_t samples = 0;        // loop inputs (or images) made from them
   std::uint64_t undecodable = 0;    // bytes that do not hold the type
-  std::uint64_t without_value = 0;  // e.g. an Imu without orientation asked for an attitude; a compass
-                                    // reading without a recent attitude to level it
+  // Per sensor of the topic: messages that gave it no sample (e.g. an Imu without orientation asked for an
+  // attitude; a compass reading without a recent attitude to level it).
+  std::array<std::uint64_t, static_cast<std::size_t>(ForeignSensor::kCount)> without_value{};
 };
 
 // A ROS 1 bag or ROS 2 MCAP seen through a topic map as a stream of the loop's inputs and stereo pairs

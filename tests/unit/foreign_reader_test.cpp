@@ -359,6 +359,32 @@ TEST(ForeignReader, StampsGoingBackBeyondTheToleranceStopTheReplayNamingTheTopic
   EXPECT_EQ(d.imu.size(), 3u);
 }
 
+TEST(ForeignReader, AnAttitudeAskedOfAnImuWithoutOrientationIsCountedAndNamed) {
+  const std::string path = tempPath("no_orientation.mcap");
+  {
+    testing::ForeignMcapWriter w(path);
+    for (int i = 0; i < 3; ++i) {
+      ros::Imu m = imuAt(kT0Ns + i * 5'000'000LL, Eigen::Quaterniond::Identity());
+      m.orientation_covariance[0] = -1.0;  // a plain IMU
+      w.write("/imu", m, kT0Ns + i * 5'000'000LL);
+    }
+    w.close();
+  }
+  ForeignReplayReader reader;
+  std::string error;
+  ASSERT_TRUE(reader.open(path, parseMap("topics:\n  /imu: {sensor: [imu, attitude]}\n"), &error)) << error;
+  Collected c;
+  ASSERT_TRUE(collect(reader, &c, &error)) << error;
+  EXPECT_EQ(c.imu.size(), 3u);
+  EXPECT_TRUE(c.attitude.empty());
+  ASSERT_EQ(reader.warnings().size(), 1u);
+  EXPECT_NE(reader.warnings()[0].find("topic '/imu': no attitude sample from 3 of 3 messages (no orientation: "
+                                      "orientation_covariance[0] = -1"),
+            std::string::npos)
+      << reader.warnings()[0];
+  EXPECT_EQ(reader.counts("/imu")->without_value[static_cast<std::size_t>(ForeignSensor::kAttitude)], 3u);
+}
+
 TEST(ForeignReader, AnEmptyStampIsRefusedWithTheWayOut) {
   const std::string path = tempPath("nostamp.mcap");
   {
