@@ -8,7 +8,8 @@
 // (http://wiki.ros.org/ROS/Technical%20Overview#Message_serialization_and_msg_MD5_sums).
 // The values for the types deepnav reads were computed by that rule from the .msg files of
 // common_msgs (std_msgs/Header = md5("uint32 seq\ntime stamp\nstring frame_id") =
-// 2176decaecbce78abc3b96ef049fabed, ...) and are the ones `rosbag info` prints for these types.
+// 2176decaecbce78abc3b96ef049fabed, ...; tests/unit/rosbag_md5_test.cpp recomputes them) and are
+// the ones `rosbag info` prints for these types.
 namespace deepnav::rosbag {
 
 // The standard md5sum of a ROS 1 type ("sensor_msgs/Imu"), or empty when deepnav does not decode
