@@ -42,7 +42,7 @@ constexpr unsigned kAll = (1u << static_cast<unsigned>(ForeignSensor::kCount)) -
 
 const std::array kTopicParams = {
     P{"sensor", ParamType::kString, "-", 0, 0, "''", "",
-      "what the topic feeds, a name or a list: imu, attitude, heading (sensor_msgs/Imu), dvl "
+      "required: what the topic feeds, a name or a list of names: imu, attitude, heading (sensor_msgs/Imu), dvl "
       "(TwistWithCovarianceStamped, TwistStamped), depth (FluidPressure), compass (MagneticField), camera_left, "
       "camera_right (Image, CompressedImage)",
       TOPIC_FIELD(sensor)},
