@@ -58,6 +58,8 @@ bool ForeignReplayReader::open(const std::string& path, const TopicMap& map, std
   topics_.clear();
   warnings_.clear();
   stats_ = ReplayReadStats{};
+  pairing_ = StereoPairing(map_.pair_tolerance_us.value_or(vehicle_.pair_tolerance_us));
+  have_attitude_ = false;
   container_ = openForeignContainer(path, error);
   if (!container_) return false;
   for (const TopicMapping& mapping : map_.topics) {
