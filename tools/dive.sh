@@ -3,7 +3,7 @@
 # sensors with systematic errors the board does not know, deep-sea image formation, a plume, the arm),
 # replay each dive through the full two-stage pipeline in the paper's test settings and as dead
 # reckoning, print the paper's tables over the seeds (mean ± std) and write the report.
-#   tools/dive.sh            the default matrix, sized for 20 minutes on 2 cores (README, "Main job")
+#   tools/dive.sh            the default matrix, sized for 20 minutes on 2 cores (docs/results.md, "Main job")
 #   DIVE_SEEDS="3 4 5" DIVE_OTHER_SEEDS="3 4 5" DIVE_VARIANTS="moderate murky clear" DIVE_RUNS_ALL=1 tools/dive.sh
 #                            a wider matrix (about 9 minutes of the 2 cores per 5-minute dive with all runs)
 # Outputs: out/tables.md (and out/tables-*.json), out/<dive>/<run>/summary.json, report/index.html. The
@@ -20,7 +20,7 @@ variants=(${DIVE_VARIANTS:-moderate murky})
 jobs="$(nproc)"
 start_s=$SECONDS
 
-# The paper's runs (README, "Main job"): the board as is is T_L2 (EKF-adaptive).
+# The paper's runs (docs/results.md, "Main job"): the board as is is T_L2 (EKF-adaptive).
 declare -A run_args=(
   [dr]="--set vision.vo_mode=none --set markers.enabled=false"
   [tl1]="--set vision.vo_mode=none"

@@ -6,7 +6,8 @@
 // figures quoted in vision/calib/README.md.
 //
 // DEEPNAV_PORT_DIVE_S (default 30) sets the dive's length, DEEPNAV_PORT_DIVE_DEFAULT=1 flies the default
-// dive's trajectory at 10 Hz (with DEEPNAV_PORT_DIVE_S=120: the README's whole-dive figures, ~6 min CPU).
+// dive's trajectory at 10 Hz (with DEEPNAV_PORT_DIVE_S=120: the whole-dive figures of docs/calibration.md,
+// ~6 min CPU).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -174,7 +175,8 @@ class FlatPortDive : public ::testing::Test {
     duration_s_ = env ? std::atof(env) : 30.0;
     // The flat-port scenario (12 mm acrylic, pinhole 8 mm behind it), shortened: 2.5 m from the left
     // face, at 1.5 m after 6 s, a dwell and the corner; 5 pairs a second. DEEPNAV_PORT_DIVE_DEFAULT=1:
-    // the default dive's trajectory and 10 pairs a second instead (the README's whole-dive figures).
+    // the default dive's trajectory and 10 pairs a second instead (the whole-dive figures of
+    // docs/calibration.md).
     const bool full = std::getenv("DEEPNAV_PORT_DIVE_DEFAULT") != nullptr;
     std::ofstream(dir_ / "scenario.yaml")
         << "name: flat-port-short\nduration_s: " << duration_s_

@@ -113,7 +113,7 @@ TEST(SeaTrialDeadReckoning, DriftsAsItsSensorGradesImply) {
   ASSERT_GT(ideal_rpe.translation_percent.count, 30u);
   const double implied_percent = ideal_rpe.translation_percent.mean;
   // WHEN deepnav dead-reckons the same dive as a plain integrator (with its systematic states as consider
-  // states it drifts more on this seed: 9.3 % against 3.5 %, README "Main job")
+  // states it drifts more on this seed: 9.3 % against 3.5 %, docs/results.md "Main job")
   const ReplaySummary s = deepnavDeadReckoning(kScenarios + "sea-trial.yaml",
                                                std::string(DEEPNAV_SOURCE_DIR) + "/board/sim-sea/board.yaml", "sea",
                                                kWithoutSystematicStates);
@@ -150,7 +150,7 @@ TEST(SeaTrialDeadReckoning, TheFilterIsConsistentWithItsSystematicStates) {
   EXPECT_GT(yaw.in_band_fraction, 0.9);
   // AND its position is still overconfident, but within a factor ~5 of its 3 dof instead of the 36-60
   // before (measured at seed 23: mean 14.6, 29 % in band; issue 18's 90 % is not reached: the position
-  // errors of this dive are not all modelled, README "Main job"); this guards the figure reached
+  // errors of this dive are not all modelled, docs/results.md "Main job"); this guards the figure reached
   EXPECT_LT(pos.mean, 20.0);
   EXPECT_GT(pos.in_band_fraction, 0.2);
 }

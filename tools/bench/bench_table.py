@@ -6,8 +6,8 @@ EKF's costs, replay speed against real time and peak resident memory.
 
 Runs the Google Benchmark binaries of build/bin (CPU time, one thread), then `deepnav replay` of a
 recording (default: a 30 s simulated dive it writes with deepnav-sim) for the speed against real time and
-the peak resident memory of the whole replay (vision worker included). Prints Markdown; the README shows
-the latest table with the machine it ran on."""
+the peak resident memory of the whole replay (vision worker included). Prints Markdown; docs/benchmarks.md
+shows the latest table with the machine it ran on."""
 import argparse
 import json
 import os
