@@ -84,7 +84,7 @@ const std::array kTopicParams = {
       "skipped",
       TOPIC_FIELD(max_attitude_age_ms)},
     P{"mono16_bits", ParamType::kInt, "bits", 8, 16, "16", "",
-      "camera mono16/16UC1: significant bits; 8-bit value = value >> (mono16_bits - 8), saturated",
+      "camera mono16/16UC1 (or a 16-bit PNG): significant bits; 8-bit value = value >> (mono16_bits - 8), saturated",
       TOPIC_FIELD(mono16_bits)},
 };
 

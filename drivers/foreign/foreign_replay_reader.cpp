@@ -325,7 +325,7 @@ bool ForeignReplayReader::handleImage(TopicState& s, const ForeignMessage& m, co
     ros::CompressedImage msg;
     if (!decodeForeign(m, &msg)) return undecodable(s);
     if (!sampleTime(s, m, msg.header.stamp, &t, error)) return false;
-    converted = imageFromRos(msg, vehicle_.channels, &image_, &why);
+    converted = imageFromRos(msg, vehicle_.channels, s.map->mono16_bits, &image_, &why);
   }
   if (!converted) {
     *error = where(s) + ": message " + std::to_string(s.counts.messages) + ": " + why;

@@ -91,7 +91,7 @@ bool imageFromRos(const ros::Image& m, int channels, int mono16_bits, cv::Mat* o
   return true;
 }
 
-bool imageFromRos(const ros::CompressedImage& m, int channels, cv::Mat* out, std::string* error) {
+bool imageFromRos(const ros::CompressedImage& m, int channels, int mono16_bits, cv::Mat* out, std::string* error) {
   const std::string format = lower(m.format);
   if (format.find("compresseddepth") != std::string::npos ||
       (format.find("jpeg") == std::string::npos && format.find("jpg") == std::string::npos &&
@@ -104,11 +104,19 @@ bool imageFromRos(const ros::CompressedImage& m, int channels, cv::Mat* out, std
     return false;
   }
   const cv::Mat bytes(1, static_cast<int>(m.data.size()), CV_8UC1, const_cast<std::uint8_t*>(m.data.data()));
-  *out = cv::imdecode(bytes, channels == 1 ? cv::IMREAD_GRAYSCALE : cv::IMREAD_COLOR);
-  if (out->empty()) {
-    *error = "compressed image (" + m.format + ", " + std::to_string(m.data.size()) + " bytes) does not decode";
+  const cv::Mat decoded = cv::imdecode(bytes, cv::IMREAD_UNCHANGED);
+  if (decoded.empty() || (decoded.depth() != CV_8U && decoded.depth() != CV_16U) ||
+      (decoded.channels() != 1 && decoded.channels() != 3 && decoded.channels() != 4)) {
+    *error = "compressed image (" + m.format + ", " + std::to_string(m.data.size()) + " bytes) does not decode" +
+             (decoded.empty() ? std::string() : " to 8- or 16-bit grey, BGR or BGRA");
     return false;
   }
+  // A 16-bit PNG (grey, or colour) is brought to 8 bits as a mono16 Image is.
+  cv::Mat eight_bit = decoded;
+  if (decoded.depth() == CV_16U) {
+    decoded.convertTo(eight_bit, CV_8U, 1.0 / static_cast<double>(1 << (mono16_bits - 8)));
+  }
+  toChannels(eight_bit, eight_bit.channels() == 4 ? cv::COLOR_BGRA2BGR : -1, channels, out);
   return true;
 }
 

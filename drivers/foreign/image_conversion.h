@@ -10,10 +10,11 @@
 // (either byte order; scaled to 8 bits by a right shift of mono16_bits - 8). Bayer, YUV, float and
 // other encodings are refused by name. sensor_msgs/CompressedImage: JPEG and PNG (format naming
 // "jpeg", "jpg" or "png", as image_transport writes it: "jpeg" or "bgr8; jpeg compressed bgr8"),
-// decoded with cv::imdecode; compressedDepth and anything else refused by name.
+// decoded with cv::imdecode (a 16-bit PNG is brought to 8 bits as mono16 is); compressedDepth and
+// anything else refused by name.
 namespace deepnav::foreign {
 
 bool imageFromRos(const ros::Image& m, int channels, int mono16_bits, cv::Mat* out, std::string* error);
-bool imageFromRos(const ros::CompressedImage& m, int channels, cv::Mat* out, std::string* error);
+bool imageFromRos(const ros::CompressedImage& m, int channels, int mono16_bits, cv::Mat* out, std::string* error);
 
 }  // namespace deepnav::foreign

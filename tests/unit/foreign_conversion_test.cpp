@@ -257,24 +257,34 @@ TEST(ForeignConversion, PngAndJpegDecodeOthersAreRefused) {
   ASSERT_TRUE(cv::imencode(".png", grey, m.data));
   cv::Mat out;
   std::string error;
-  ASSERT_TRUE(imageFromRos(m, 1, &out, &error)) << error;
+  ASSERT_TRUE(imageFromRos(m, 1, 16, &out, &error)) << error;
   EXPECT_EQ(cv::norm(out, grey, cv::NORM_INF), 0.0);  // lossless
   m.format = "mono8; jpeg compressed mono8";
   ASSERT_TRUE(cv::imencode(".jpg", grey, m.data, {cv::IMWRITE_JPEG_QUALITY, 100}));
-  ASSERT_TRUE(imageFromRos(m, 3, &out, &error)) << error;
+  ASSERT_TRUE(imageFromRos(m, 3, 16, &out, &error)) << error;
   EXPECT_EQ(out.type(), CV_8UC3);
   EXPECT_EQ(out.size(), grey.size());
+  // A 12-bit camera's image in a 16-bit PNG: 0x0FFF -> 255, 0x0800 -> 128 with mono16_bits 12.
+  cv::Mat deep(1, 2, CV_16UC1);
+  deep.at<std::uint16_t>(0, 0) = 0x0FFF;
+  deep.at<std::uint16_t>(0, 1) = 0x0800;
+  m.format = "png";
+  ASSERT_TRUE(cv::imencode(".png", deep, m.data));
+  ASSERT_TRUE(imageFromRos(m, 1, 12, &out, &error)) << error;
+  ASSERT_EQ(out.type(), CV_8UC1);
+  EXPECT_EQ(out.at<std::uint8_t>(0, 0), 255);
+  EXPECT_EQ(out.at<std::uint8_t>(0, 1), 128);
   m.format = "png compressedDepth";
-  EXPECT_FALSE(imageFromRos(m, 1, &out, &error));
+  EXPECT_FALSE(imageFromRos(m, 1, 16, &out, &error));
   EXPECT_NE(error.find("'png compressedDepth'"), std::string::npos) << error;
   m.format = "webp";
-  EXPECT_FALSE(imageFromRos(m, 1, &out, &error));
+  EXPECT_FALSE(imageFromRos(m, 1, 16, &out, &error));
   m.format = "jpeg";
   m.data = {1, 2, 3, 4};
-  EXPECT_FALSE(imageFromRos(m, 1, &out, &error));
+  EXPECT_FALSE(imageFromRos(m, 1, 16, &out, &error));
   EXPECT_NE(error.find("does not decode"), std::string::npos) << error;
   m.data.clear();
-  EXPECT_FALSE(imageFromRos(m, 1, &out, &error));
+  EXPECT_FALSE(imageFromRos(m, 1, 16, &out, &error));
 }
 
 cv::Mat tagged(int value) { return cv::Mat(2, 2, CV_8UC1, cv::Scalar(value)); }
