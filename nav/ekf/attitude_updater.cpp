@@ -2,8 +2,8 @@
 
 #include <cmath>
 
+#include "base/so3.h"
 #include "nav/ekf/ekf_config.h"
-#include "nav/ekf/so3.h"
 
 namespace deepnav {
 namespace {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "base/so3.h"
 #include "nav/ekf/attitude_updater.h"
 #include "nav/ekf/bias_gauss_markov.h"
 #include "nav/ekf/depth_updater.h"
@@ -16,7 +17,6 @@
 #include "nav/ekf/pose_updater.h"
 #include "nav/ekf/relative_pose_updater.h"
 #include "nav/ekf/sample_fingerprint.h"
-#include "nav/ekf/so3.h"
 #include "nav/ekf/stochastic_clone.h"
 
 namespace deepnav {

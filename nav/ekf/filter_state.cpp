@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "nav/ekf/so3.h"
+#include "base/so3.h"
 
 namespace deepnav {
 namespace {

@@ -1,7 +1,7 @@
 #include "nav/ekf/imu_propagation.h"
 
+#include "base/so3.h"
 #include "nav/ekf/ekf_config.h"
-#include "nav/ekf/so3.h"
 
 namespace deepnav {
 

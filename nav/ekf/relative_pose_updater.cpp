@@ -5,7 +5,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 
-#include "nav/ekf/so3.h"
+#include "base/so3.h"
 
 namespace deepnav {
 

@@ -2,7 +2,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
-#include "nav/markers/marker_observation.h"
+#include "base/marker_observation.h"
 #include "nav/markers/panel_description.h"
 
 namespace deepnav {

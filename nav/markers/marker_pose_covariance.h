@@ -1,7 +1,7 @@
 #pragma once
 #include <string>
 
-#include "nav/markers/marker_observation.h"
+#include "base/marker_observation.h"
 
 namespace deepnav {
 

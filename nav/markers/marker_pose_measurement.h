@@ -3,8 +3,8 @@
 #include <Eigen/Geometry>
 #include <string>
 
+#include "base/marker_observation.h"
 #include "nav/ekf/ekf_measurements.h"
-#include "nav/markers/marker_observation.h"
 #include "nav/markers/marker_pose_covariance.h"
 #include "nav/markers/panel_description.h"
 #include "nav/types/time.h"

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "nav/ekf/so3.h"
+#include "base/so3.h"
 #include "nav/markers/marker_frame_chain.h"
 
 namespace deepnav {

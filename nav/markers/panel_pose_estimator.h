@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <string>
 
-#include "nav/markers/marker_observation.h"
+#include "base/marker_observation.h"
 #include "nav/markers/marker_pose_measurement.h"
 #include "nav/markers/panel_description.h"
 #include "nav/markers/panel_pose_config.h"

@@ -2,7 +2,7 @@
 #include <array>
 #include <cstdint>
 
-#include "nav/markers/marker_observation.h"
+#include "base/marker_observation.h"
 #include "nav/types/time.h"
 #include "nav/types/vo_measurement.h"
 

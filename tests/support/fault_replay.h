@@ -13,9 +13,9 @@
 
 #include <gtest/gtest.h>
 
+#include "base/so3.h"
 #include "board/replay/bench_replay.h"
 #include "board/replay/replay_fault_injector.h"
-#include "nav/ekf/so3.h"
 #include "tests/support/test_dive.h"
 
 namespace deepnav::testing {

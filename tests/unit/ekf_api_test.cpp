@@ -6,11 +6,11 @@
 #include <Eigen/Cholesky>
 #include <gtest/gtest.h>
 
+#include "base/so3.h"
 #include "nav/ekf/ekf.h"
 #include "nav/ekf/heading_updater.h"
 #include "nav/ekf/imu_to_robot.h"
 #include "nav/ekf/initial_alignment.h"
-#include "nav/ekf/so3.h"
 
 namespace deepnav {
 namespace {

@@ -4,8 +4,8 @@
 // is known to be beyond it.
 #include <gtest/gtest.h>
 
+#include "base/so3.h"
 #include "nav/ekf/ekf.h"
-#include "nav/ekf/so3.h"
 
 namespace deepnav {
 namespace {

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "base/so3.h"
 #include "nav/ekf/attitude_updater.h"
 #include "nav/ekf/bias_gauss_markov.h"
 #include "nav/ekf/depth_updater.h"
@@ -17,7 +18,6 @@
 #include "nav/ekf/innovation_gate.h"
 #include "nav/ekf/pose_updater.h"
 #include "nav/ekf/relative_pose_updater.h"
-#include "nav/ekf/so3.h"
 #include "nav/ekf/stochastic_clone.h"
 #include "nav/ekf/systematic_states.h"
 

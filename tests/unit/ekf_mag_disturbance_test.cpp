@@ -11,12 +11,12 @@
 
 #include <gtest/gtest.h>
 
+#include "base/so3.h"
 #include "drivers/cdr/ros2msg_definitions.h"
 #include "drivers/recording/fusion_codec.h"
 #include "drivers/recording/topics.h"
 #include "nav/ekf/ekf.h"
 #include "nav/ekf/mag_disturbance.h"
-#include "nav/ekf/so3.h"
 
 namespace deepnav {
 namespace {

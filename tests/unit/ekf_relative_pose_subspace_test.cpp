@@ -6,9 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include "base/so3.h"
 #include "nav/ekf/initial_alignment.h"
 #include "nav/ekf/relative_pose_updater.h"
-#include "nav/ekf/so3.h"
 #include "nav/ekf/stochastic_clone.h"
 
 namespace deepnav {

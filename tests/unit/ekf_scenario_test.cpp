@@ -11,9 +11,9 @@
 
 #include <gtest/gtest.h>
 
+#include "base/so3.h"
 #include "nav/ekf/ekf.h"
 #include "nav/ekf/initial_alignment.h"
-#include "nav/ekf/so3.h"
 
 namespace deepnav {
 namespace {

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "nav/ekf/so3.h"
+#include "base/so3.h"
 #include "nav/markers/marker_frame_chain.h"
 #include "nav/markers/panel_pose_estimator.h"
 #include "nav/markers/quaternion_average.h"

@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "base/so3.h"
 #include "nav/ekf/ekf.h"
-#include "nav/ekf/so3.h"
 #include "nav/pipeline/panel_anchor.h"
 
 namespace deepnav {

@@ -6,7 +6,7 @@
 #include <random>
 #include <vector>
 
-#include "nav/ekf/so3.h"
+#include "base/so3.h"
 #include "vision/orbvo/local_bundle_adjuster.h"
 #include "vision/orbvo/stereo_projection.h"
 

@@ -15,7 +15,7 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
-#include "nav/ekf/so3.h"
+#include "base/so3.h"
 #include "nav/metrics/chi_square.h"
 #include "vision/orbvo/orb_stereo_odometry.h"
 #include "vision/orbvo/synthetic_plane_scene.h"

@@ -12,7 +12,7 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
-#include "nav/ekf/so3.h"
+#include "base/so3.h"
 #include "vision/orbvo/orb_stereo_odometry.h"
 #include "vision/orbvo/synthetic_plane_scene.h"
 

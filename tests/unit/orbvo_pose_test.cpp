@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-#include "nav/ekf/so3.h"
+#include "base/so3.h"
 #include "vision/orbvo/pnp_ransac.h"
 #include "vision/orbvo/pose_refiner.h"
 #include "vision/orbvo/relative_camera_pose.h"

@@ -8,8 +8,8 @@
 #include <cmath>
 #include <random>
 
+#include "base/so3.h"
 #include "nav/ekf/relative_pose_updater.h"
-#include "nav/ekf/so3.h"
 #include "vision/planes/plane_registration.h"
 
 namespace deepnav {

@@ -2,10 +2,35 @@
 
 #include <cmath>
 
-#include "vision/planes/plane_vo_measurement.h"
+#include "nav/ekf/ekf_measurements.h"
+#include "nav/pipeline/camera_relative_pose.h"
+#include "vision/planes/plane_registration.h"
 
 namespace deepnav {
 namespace {
+
+// The plane registration (camera frames) as the EKF's relative pose measurement (robot frames), the
+// way the nav side fuses a plane VoMeasurement (relativePoseFromCamera):
+//   T_robota_robotb = T_robot_cam T_cama_camb T_robot_cam^-1,
+//   p_robotb_in_robota = R_rc t_c + p_cam_in_robot - R_ab p_cam_in_robot,
+// rotation error delta_r = R_rc delta_c (both right perturbations), translation covariance
+// R_rc C_t R_rc^T + J C_rot J^T with J = R_ab [p_cam_in_robot]x (the lever arm turns with the
+// rotation error), cross covariance J C_rot. Order [x y z roll pitch yaw] as in
+// RelativePoseMeasurement. False when the registration is not valid (rotation not fully observed).
+bool toRelativePoseMeasurement(const PlaneRegistrationResult& registration,
+                               const Eigen::Isometry3d& T_robot_cam, TimeUs t_b_us,
+                               std::uint32_t clone_id, RelativePoseMeasurement* measurement) {
+  if (!registration.valid) return false;
+  VoMeasurement vo;
+  vo.valid = true;
+  vo.source = VoSource::kPlanes;
+  vo.q_cama_camb = registration.q_cama_camb;
+  vo.p_camb_in_cama_m = registration.p_camb_in_cama_m;
+  vo.has_translation = registration.has_translation;
+  vo.cov = registration.cov;
+  vo.support = registration.matched_planes;
+  return relativePoseFromCamera(vo, T_robot_cam, t_b_us, clone_id, measurement);
+}
 
 // Rotation vector of a rotation matrix (log map).
 Eigen::Vector3d logMap(const Eigen::Matrix3d& R) {

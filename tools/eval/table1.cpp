@@ -13,12 +13,12 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "base/so3.h"
 #include "board/config/board_overrides.h"
 #include "board/config/vehicle_setup.h"
+#include "drivers/replay/truth_frame_reader.h"
 #include "nav/ekf/innovation_gate.h"
 #include "nav/ekf/relative_pose_updater.h"
-#include "nav/ekf/so3.h"
-#include "drivers/replay/truth_frame_reader.h"
 #include "vision/cloud/stereo_cloud.h"
 #include "vision/planes/plane_extractor.h"
 #include "vision/planes/plane_registration.h"

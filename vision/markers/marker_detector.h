@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "nav/markers/marker_observation.h"
+#include "base/marker_observation.h"
 #include "vision/markers/marker_corner_refinement.h"
 #include "vision/markers/pinhole_intrinsics.h"
 #include "vision/markers/square_marker_pose.h"

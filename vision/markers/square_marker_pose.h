@@ -3,7 +3,7 @@
 #include <Eigen/Geometry>
 #include <array>
 
-#include "nav/markers/marker_observation.h"
+#include "base/marker_observation.h"
 #include "vision/markers/pinhole_intrinsics.h"
 
 namespace deepnav {

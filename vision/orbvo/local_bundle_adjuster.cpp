@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "nav/ekf/so3.h"
+#include "base/so3.h"
 #include "vision/orbvo/stereo_projection.h"
 
 namespace deepnav {

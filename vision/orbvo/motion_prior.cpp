@@ -5,7 +5,7 @@
 #include <limits>
 #include <numbers>
 
-#include "nav/ekf/so3.h"
+#include "base/so3.h"
 #include "vision/orbvo/stereo_projection.h"
 
 namespace deepnav {

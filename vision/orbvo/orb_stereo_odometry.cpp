@@ -7,7 +7,7 @@
 #include <opencv2/imgproc.hpp>
 #include <utility>
 
-#include "nav/ekf/so3.h"
+#include "base/so3.h"
 #include "vision/orbvo/keyframe_thumbnail.h"
 #include "vision/orbvo/projection_search.h"
 #include "vision/orbvo/relative_camera_pose.h"

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <opencv2/calib3d.hpp>
 
-#include "nav/ekf/so3.h"
+#include "base/so3.h"
 
 namespace deepnav {
 

@@ -1,6 +1,6 @@
 #include "vision/orbvo/relative_camera_pose.h"
 
-#include "nav/ekf/so3.h"
+#include "base/so3.h"
 
 namespace deepnav {
 

@@ -1,4 +1,4 @@
-#include "nav/ekf/so3.h"
+#include "base/so3.h"
 
 #include <cmath>
 #include <numbers>

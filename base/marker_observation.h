@@ -9,7 +9,7 @@ namespace deepnav {
 // One square fiducial marker seen in one rectified image, with its pose in the camera optical frame
 // C (z forward, x right, y down). Marker frame M as in nav/markers/panel_description.h (OpenCV
 // ArUco): origin at the marker centre, x right, y up, z out of the face towards the camera. Plain
-// data, no OpenCV type, so that VisionResult (nav/types) can carry it.
+// data, no OpenCV type: the detector (vision/markers) writes it, VisionResult (nav/types) carries it.
 struct MarkerObservation {
   std::int32_t id = -1;
   // Corners in pixels (pixel centres at integer coordinates, OpenCV convention), in the ArUco
