@@ -3,7 +3,8 @@
 #   nav/         estimation: base/ and nav/, never vision/;
 #   nav/types/   the sample types: base/ and nav/types/ only (they sit below the rest of nav);
 #   vision/      image processing: base/, vision/ and the sample types nav/types/ only;
-#   drivers/     never board/ or tools/. No library includes tests/.
+#   drivers/     never board/ or tools/; board/ never tools/. No library includes tests/ (test scaffolding
+#                such as the synthetic scenes lives in tests/support, target test_support).
 # Run: cmake -DROOT=<project root> -P tests/check_layout.cmake (ctest: layout_dependency_direction).
 if(NOT ROOT)
   get_filename_component(ROOT "${CMAKE_CURRENT_LIST_DIR}/.." ABSOLUTE)
@@ -32,3 +33,4 @@ check_folder(nav "vision|drivers|board|tools|tests")
 check_folder(nav/types "nav|vision|drivers|board|tools|tests" "#include \"nav/types/")
 check_folder(vision "nav|drivers|board|tools|tests" "#include \"nav/types/")
 check_folder(drivers "board|tools|tests")
+check_folder(board "tools|tests")

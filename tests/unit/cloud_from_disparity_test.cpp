@@ -4,8 +4,8 @@
 
 #include <cmath>
 
+#include "tests/support/synthetic_scene.h"
 #include "vision/cloud/mixed_pixel_filter.h"
-#include "vision/cloud/synthetic_scene.h"
 #include "vision/stereo/disparity_estimator.h"
 
 namespace deepnav {

@@ -9,8 +9,8 @@
 
 #include "nav/markers/marker_ambiguity.h"
 #include "nav/markers/marker_frame_chain.h"
+#include "tests/support/synthetic_marker_image.h"
 #include "vision/markers/marker_detector.h"
-#include "vision/markers/synthetic_marker_image.h"
 
 namespace deepnav {
 namespace {

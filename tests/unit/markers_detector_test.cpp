@@ -9,10 +9,10 @@
 #include <opencv2/imgproc.hpp>
 #include <string>
 
+#include "tests/support/synthetic_marker_image.h"
 #include "vision/markers/aruco_dictionary.h"
 #include "vision/markers/marker_detector.h"
 #include "vision/markers/square_marker_pose.h"
-#include "vision/markers/synthetic_marker_image.h"
 
 namespace deepnav {
 namespace {

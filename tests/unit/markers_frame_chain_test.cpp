@@ -10,8 +10,8 @@
 #include <random>
 
 #include "nav/markers/marker_frame_chain.h"
+#include "tests/support/synthetic_marker_image.h"
 #include "vision/markers/marker_detector.h"
-#include "vision/markers/synthetic_marker_image.h"
 
 namespace deepnav {
 namespace {

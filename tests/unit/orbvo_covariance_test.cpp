@@ -17,8 +17,8 @@
 
 #include "base/so3.h"
 #include "nav/metrics/chi_square.h"
+#include "tests/support/synthetic_plane_scene.h"
 #include "vision/orbvo/orb_stereo_odometry.h"
-#include "vision/orbvo/synthetic_plane_scene.h"
 
 namespace deepnav {
 namespace {

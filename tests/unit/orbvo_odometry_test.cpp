@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "base/so3.h"
+#include "tests/support/synthetic_plane_scene.h"
 #include "vision/orbvo/orb_stereo_odometry.h"
-#include "vision/orbvo/synthetic_plane_scene.h"
 
 namespace deepnav {
 namespace {

@@ -9,9 +9,9 @@
 #include <opencv2/imgproc.hpp>
 #include <vector>
 
+#include "tests/support/synthetic_plane_scene.h"
 #include "vision/orbvo/grid_orb_extractor.h"
 #include "vision/orbvo/stereo_feature_matcher.h"
-#include "vision/orbvo/synthetic_plane_scene.h"
 
 namespace deepnav {
 namespace {

@@ -3,8 +3,8 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
+#include "tests/support/synthetic_scene.h"
 #include "vision/cloud/cloud_from_disparity.h"
-#include "vision/cloud/synthetic_scene.h"
 #include "vision/planes/plane_extractor.h"
 #include "vision/stereo/disparity_estimator.h"
 

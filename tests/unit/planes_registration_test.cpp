@@ -6,8 +6,8 @@
 #include <random>
 #include <vector>
 
+#include "tests/support/synthetic_scene.h"
 #include "vision/cloud/cloud_from_disparity.h"
-#include "vision/cloud/synthetic_scene.h"
 #include "vision/planes/plane_extractor.h"
 #include "vision/planes/plane_registration.h"
 

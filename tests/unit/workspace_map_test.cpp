@@ -6,9 +6,9 @@
 #include <random>
 #include <sstream>
 
+#include "tests/support/synthetic_scene.h"
 #include "vision/cloud/cloud_from_disparity.h"
 #include "vision/cloud/mixed_pixel_filter.h"
-#include "vision/cloud/synthetic_scene.h"
 
 namespace deepnav {
 namespace {

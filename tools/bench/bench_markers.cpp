@@ -10,8 +10,8 @@
 #include "nav/markers/marker_frame_chain.h"
 #include "nav/markers/marker_pose_measurement.h"
 #include "nav/markers/panel_pose_estimator.h"
+#include "tests/support/synthetic_marker_image.h"
 #include "vision/markers/marker_detector.h"
-#include "vision/markers/synthetic_marker_image.h"
 
 namespace {
 

@@ -8,10 +8,10 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
+#include "tests/support/synthetic_plane_scene.h"
 #include "vision/orbvo/grid_orb_extractor.h"
 #include "vision/orbvo/orb_stereo_odometry.h"
 #include "vision/orbvo/stereo_feature_matcher.h"
-#include "vision/orbvo/synthetic_plane_scene.h"
 
 namespace {
 

@@ -13,9 +13,9 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
+#include "tests/support/synthetic_scene.h"
 #include "vision/cloud/cloud_from_disparity.h"
 #include "vision/cloud/mixed_pixel_filter.h"
-#include "vision/cloud/synthetic_scene.h"
 #include "vision/planes/plane_extractor.h"
 #include "vision/planes/plane_registration.h"
 #include "vision/stereo/elas_disparity.h"

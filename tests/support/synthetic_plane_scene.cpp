@@ -1,4 +1,4 @@
-#include "vision/orbvo/synthetic_plane_scene.h"
+#include "tests/support/synthetic_plane_scene.h"
 
 #include <algorithm>
 #include <array>

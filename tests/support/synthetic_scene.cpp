@@ -1,4 +1,4 @@
-#include "vision/cloud/synthetic_scene.h"
+#include "tests/support/synthetic_scene.h"
 
 #include <algorithm>
 #include <array>

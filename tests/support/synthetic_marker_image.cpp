@@ -1,4 +1,4 @@
-#include "vision/markers/synthetic_marker_image.h"
+#include "tests/support/synthetic_marker_image.h"
 
 #include <algorithm>
 #include <cmath>
