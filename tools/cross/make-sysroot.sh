@@ -26,9 +26,12 @@ alternatives() {
   done
 }
 
-if [ -f "$sysroot/.deepnav-sysroot" ]; then
+# The marker holds the package list it was made from: a sysroot made before a package was added is
+# made again (CI reuses the clone's directory only within one run, a developer's across edits).
+stamp="${packages[*]}"
+if [ -f "$sysroot/.deepnav-sysroot" ] && [ "$(cat "$sysroot/.deepnav-sysroot")" = "$stamp" ]; then
   alternatives "$sysroot"
-  echo "make-sysroot: $sysroot exists (remove it to rebuild)"
+  echo "make-sysroot: $sysroot is up to date (remove it to rebuild)"
   exit 0
 fi
 rm -rf "$sysroot"
@@ -48,5 +51,5 @@ find "$sysroot" -type l -lname '/*' | while read -r link; do
   ln -sfn "$(realpath -m --relative-to="$(dirname "$link")" "$sysroot$target")" "$link"
 done
 alternatives "$sysroot"
-touch "$sysroot/.deepnav-sysroot"
+echo "$stamp" >"$sysroot/.deepnav-sysroot"
 du -sh "$sysroot"

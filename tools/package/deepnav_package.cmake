@@ -35,10 +35,15 @@ set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_WARN_ON_ABSOLUTE_INSTALL_DESTINATION OFF)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION misc)
-# Runtime libraries from dpkg-shlibdeps (native builds); a cross build names its architecture's.
+# Runtime libraries from dpkg-shlibdeps (native builds). A cross build has no dpkg database for its
+# sysroot: tools/package/cpack_cross_depends.cmake derives the Depends from the built binary's NEEDED
+# libraries through the host's packages of the same Debian release (tools/package/cross_depends.sh).
 if(CMAKE_CROSSCOMPILING)
   set(CPACK_DEBIAN_PACKAGE_ARCHITECTURE arm64)
   set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS OFF)
+  set(CPACK_DEEPNAV_BINARY ${CMAKE_RUNTIME_OUTPUT_DIRECTORY}/deepnav)
+  set(CPACK_DEEPNAV_CROSS_DEPENDS_SCRIPT ${PROJECT_SOURCE_DIR}/tools/package/cross_depends.sh)
+  set(CPACK_PROJECT_CONFIG_FILE ${PROJECT_SOURCE_DIR}/tools/package/cpack_cross_depends.cmake)
 else()
   set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 endif()
