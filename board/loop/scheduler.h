@@ -36,7 +36,6 @@ class Scheduler {
 
   int tickRateHz() const { return tick_rate_hz_; }
   TimeUs periodUs() const { return period_us_; }
-  int taskCount() const { return count_; }
   const TaskSpec& task(int i) const { return table_[static_cast<std::size_t>(i)]; }
   int findTask(const char* name) const;
 

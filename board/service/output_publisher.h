@@ -36,7 +36,6 @@ class OutputPublisher : public TickObserver {
   // The latest complete output (for STATUS=); sequence 0 before the first tick.
   NavOutput latest() const;
   std::uint64_t datagramsSent() const { return udp_.sent(); }
-  std::uint64_t datagramFailures() const { return udp_.failures(); }
 
  private:
   struct TickCopy {

@@ -34,7 +34,6 @@ class WorkspaceSaver {
   explicit WorkspaceSaver(std::string state_dir) : state_dir_(std::move(state_dir)) {}
   void onVisionPair(const WorkspaceModel& model, const VisionContext& context);
 
-  int saves() const { return saves_.load(std::memory_order_acquire); }
   int failures() const { return failures_.load(std::memory_order_acquire); }
 
  private:

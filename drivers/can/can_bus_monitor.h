@@ -32,7 +32,6 @@ class CanBusMonitor {
   uint64_t errorFrames() const { return error_frames_; }
   uint64_t recoveryAttempts() const { return recovery_attempts_; }
   int txErrors() const { return tx_errors_; }
-  int rxErrors() const { return rx_errors_; }
 
  private:
   TimeUs recovery_us_;

@@ -35,7 +35,6 @@ class ChunkCompressor {
   // 0 on failure (with *error set).
   size_t compress(const uint8_t* data, size_t size, uint8_t* out, size_t out_capacity,
                   std::string* error);
-  Compression compression() const { return compression_; }
 
  private:
   size_t compressZstd(const uint8_t* data, size_t size, uint8_t* out, size_t cap,

@@ -54,8 +54,6 @@ class Writer {
   const std::string& lastError() const { return error_; }
   uint64_t messageCount() const { return message_count_; }
   size_t chunkCount() const { return chunks_.size(); }
-  // Bytes handed to the OS so far.
-  uint64_t bytesWritten() const { return file_offset_; }
 
  private:
   struct SchemaState {

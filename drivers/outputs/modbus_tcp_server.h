@@ -30,10 +30,6 @@ class ModbusTcpServer {
   void stop();
   void update(const NavOutput& out);
 
-  std::uint64_t requests() const { return requests_.load(std::memory_order_relaxed); }
-  std::uint64_t refusedWrites() const { return refused_writes_.load(std::memory_order_relaxed); }
-  int clients() const { return clients_.load(std::memory_order_relaxed); }
-
  private:
   void run();
   void serve(int fd, bool* keep);

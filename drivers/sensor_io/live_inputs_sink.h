@@ -27,7 +27,6 @@ class LiveInputsSink : public SampleSink {
   bool onAttitude(const AttitudeSample& s) override { return !(kinds_ & kSampleAttitude) || inputs_->attitude.push(s); }
   bool onImu(const ImuSample& s) override { return !(kinds_ & kSampleImu) || inputs_->imu.push(s); }
   bool onDepth(const DepthSample& s) override { return !(kinds_ & kSampleDepth) || inputs_->depth.push(s); }
-  uint8_t kinds() const { return kinds_; }
 
  private:
   LiveInputs* inputs_;

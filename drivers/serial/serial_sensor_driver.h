@@ -26,7 +26,6 @@ class SerialSensorDriver {
   // One step: wait up to timeout_ms for bytes, decode them. Returns false while the port is down.
   bool poll(int timeout_ms, SampleSink* sink);
   const SensorStreamDecoder::Counters& counters() const { return decoder_.counters(); }
-  uint64_t reopens() const { return reopens_; }
   uint64_t bytesRead() const { return bytes_read_; }
 
  private:

@@ -18,7 +18,6 @@ class InitialAlignment {
   void setDepth(double depth_m) { depth_m_ = depth_m; has_depth_ = true; }
   // imu_only: neither the compass's yaw nor the depth is waited for (EkfConfig::align_imu_only).
   bool ready(int imu_samples_required, bool imu_only = false) const;
-  TimeUs lastImuTime() const { return last_imu_t_us_; }
   Eigen::Vector3d meanRate() const { return sum_w_ / static_cast<double>(count_); }
 
   // The aligned nominal state; p_depth_in_robot_m is the pressure port lever arm; gyro_bias_at_rest: the

@@ -66,7 +66,6 @@ class MagDisturbanceDetector {
   bool enabled() const { return params_.enabled; }
   double rScale() const { return params_.r_scale; }
   MagState state() const { return state_; }
-  double meanSigma() const { return mean_z_; }  // low-passed normalised innovation
   const MagDisturbanceCounters& counters() const { return counters_; }
 
  private:

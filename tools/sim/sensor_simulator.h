@@ -38,10 +38,8 @@ class SensorSimulator {
   KinematicState truthAt(TimeUs t_us) const { return trajectory_.stateAt(usToS(t_us)); }
   CameraTick cameraAt(TimeUs t_us) const { return camera_.tick(truthAt(t_us), t_us, 0); }
   const Trajectory& trajectory() const { return trajectory_; }
-  const CameraRig& cameraRig() const { return camera_; }
   const Scenario& scenario() const { return scenario_; }
   const ImuModel& imuModel() const { return imu_; }
-  const DvlModel& dvlModel() const { return dvl_; }
 
   // Samples emitted and dropped (by the fault schedule) per stream so far.
   std::uint64_t emitted(SimStream s) const { return channels_[static_cast<int>(s)].emitted; }

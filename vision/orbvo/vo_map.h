@@ -49,7 +49,6 @@ class VoMap {
   Keyframe& pushKeyframe();
 
   int mapPointCount() const { return live_points_; }
-  int mapPointCapacity() const { return static_cast<int>(points_.size()); }
   MapPoint& point(int id) { return points_[id]; }
   const MapPoint& point(int id) const { return points_[id]; }
 

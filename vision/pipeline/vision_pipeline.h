@@ -87,10 +87,6 @@ class VisionPipeline {
   const WorkspaceModel& workspace() const { return workspace_; }
   const StereoCloud& dense() const { return dense_; }
   StereoCloud& dense() { return dense_; }  // tools: one pair through the dense chain
-  const OrganizedCloud& lastCloud() const { return cloud_; }
-  const PlaneOdometry& planeOdometry() const { return plane_vo_; }
-  // Stage-2 pairs whose view lay outside the mapped workspace (filter skipped).
-  std::uint64_t outsideMapPairs() const { return outside_map_pairs_; }
   // Pairs failed by an exception in one of their stages, in total and per stage, and the last failure.
   std::uint64_t failedPairs() const { return failed_pairs_; }
   std::uint64_t stageFailures(VisionStage stage) const { return stage_failures_[static_cast<std::size_t>(stage)]; }

@@ -30,8 +30,6 @@ class PlaneCorrespondenceSearch {
   int find(const PlaneSet& a, const PlaneSet& b, std::array<PlaneMatch, kMaxMatches>* matches);
 
   int candidateCount() const { return candidate_count_; }
-  int droppedCandidates() const { return dropped_candidates_; }
-  long searchNodes() const { return nodes_; }
   bool searchExhausted() const { return exhausted_; }
 
  private:

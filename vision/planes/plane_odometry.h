@@ -47,7 +47,6 @@ class PlaneOdometry {
   bool process(TimeUs t_us, const OrganizedCloud& cloud, PlaneOdometryOutput* out);
 
   const PlaneSet& planes() const { return sets_[current_]; }  // of the last processed frame
-  const PlaneExtractor& extractor() const { return extractor_; }
 
  private:
   PlaneOdometryConfig config_;

@@ -44,7 +44,6 @@ class PlaneRegionGrower {
   const cv::Mat& labels() const { return labels_; }  // CV_8UC1: 0 = no plane
   const PlaneRegion& region(int i) const { return regions_[i]; }
   const std::int32_t* members() const { return members_.data(); }
-  int regionCount() const { return region_count_; }
   int seedsTried() const { return seeds_tried_; }
   // Cells admitted over all attempts of the last grow(), kept or released (the work done).
   long cellsAdmitted() const { return cells_admitted_; }

@@ -30,7 +30,6 @@ class DisparityEdgeRefiner {
   // guide: CV_8UC1 or CV_8UC3 of the allocated size; disparity_px: CV_32F of that size. Invalid
   // pixels (d < 0) neither vote nor change.
   void apply(const cv::Mat& guide, const EdgeRefineParams& params, cv::Mat* disparity_px);
-  int lastStride() const { return stride_px_; }
 
  private:
   void markJumps(const cv::Mat& disparity_px, float jump_px);

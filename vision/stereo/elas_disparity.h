@@ -32,10 +32,6 @@ class ElasDisparity final : public DisparityEstimator {
   // Diagnostics of the last compute().
   int supportPointCount() const { return static_cast<int>(support_.points().size()); }
   int triangleCount() const { return prior_left_.triangleCount(); }
-  const ElasSupport& support() const { return support_; }
-  const cv::Mat& priorMean() const { return prior_left_.mean(); }
-  float lastDescriptorGain() const { return descriptor_gain_; }
-  const ElasParams& params() const { return params_; }
 
  private:
   bool toGrey(const cv::Mat& image, cv::Mat* grey) const;

@@ -17,7 +17,6 @@ class OctreeLookup {
  public:
   bool build(const octomap::OcTree* tree, double distance_m);
   bool isNear(const Eigen::Vector3f& p) const;
-  int neighbourhoodSize() const { return static_cast<int>(offsets_.size()); }
 
  private:
   const octomap::OcTree* tree_ = nullptr;

@@ -29,7 +29,6 @@ class FaultSchedule {
   FaultDecision decide(SimStream stream, double t_s, std::uint64_t index, NormalRng& rng) const;
   // Largest |stamp shift| any fault can add: the merger holds events back this long to stay time-ordered.
   TimeUs maxJitter_us() const { return max_jitter_us_; }
-  const std::vector<FaultSpec>& faults() const { return faults_; }
 
  private:
   std::vector<FaultSpec> faults_;

@@ -39,8 +39,6 @@ class PanelMagneticField {
   void init(const PanelMagnetConfig& config, const PanelGeometry& panel, double seabed_z_in_odom_m,
             const EarthField& earth);
   Eigen::Vector3d field_ut(const Eigen::Vector3d& p_in_odom_m) const;
-  const Eigen::Vector3d& dipolePosition_m() const { return p_dipole_in_odom_m_; }
-  const Eigen::Vector3d& moment_am2() const { return m_in_odom_am2_; }
 
  private:
   Eigen::Vector3d p_dipole_in_odom_m_ = Eigen::Vector3d::Zero();
