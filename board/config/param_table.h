@@ -51,7 +51,7 @@ bool applyParams(const std::vector<ParamSpecView>& params, const YAML::Node& roo
 // Sets every target to its declared default.
 bool applyDefaults(const std::vector<ParamSpecView>& params, std::string* error);
 
-// A Markdown table of every parameter (for `deepnav config --list` and the README).
+// A Markdown table of every parameter (for `deepnav config --list` and docs/configuration.md).
 std::string describeParams(const std::vector<ParamSpecView>& params);
 
 template <typename Config, std::size_t N>

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "nav/ekf/so3.h"
+#include "base/so3.h"
 
 namespace deepnav {
 namespace {

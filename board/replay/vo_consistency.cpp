@@ -11,7 +11,7 @@
 
 #include <Eigen/Cholesky>
 
-#include "nav/ekf/so3.h"
+#include "base/so3.h"
 
 namespace deepnav {
 namespace {
