@@ -9,6 +9,7 @@
 
 #include "tools/sim/scenario_loader.h"
 #include "tools/sim/sensor_simulator.h"
+#include "tests/support/x86_64_reference.h"
 
 namespace deepnav::sim {
 namespace {
@@ -54,12 +55,14 @@ std::pair<std::uint64_t, std::uint64_t> dvlStreamHash(const Scenario& scenario, 
 }
 
 TEST(SimDvlDefaultStream, BuiltInDefaultsGiveTheRecordedStream) {
+  DEEPNAV_SKIP_UNLESS_X86_64_REFERENCE();
   const auto [hash, count] = dvlStreamHash(Scenario{}, 1);
   EXPECT_EQ(count, kDefaultDvlCount);
   EXPECT_EQ(hash, kDefaultDvlHash) << std::hex << hash;
 }
 
 TEST(SimDvlDefaultStream, DefaultFileAndGradeNoneGiveTheRecordedStream) {
+  DEEPNAV_SKIP_UNLESS_X86_64_REFERENCE();
   Scenario from_file, grade_none;
   std::string error;
   ASSERT_TRUE(loadScenario(std::string(DEEPNAV_SOURCE_DIR) + "/tools/sim/scenarios/default.yaml", &from_file, &error))

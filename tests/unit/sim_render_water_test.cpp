@@ -14,6 +14,7 @@
 #include "tools/sim/render/view_tick.h"
 #include "tools/sim/render/water_column.h"
 #include "tools/sim/scenario_loader.h"
+#include "tests/support/x86_64_reference.h"
 
 namespace deepnav::sim {
 namespace {
@@ -316,6 +317,7 @@ std::uint64_t hashPair(const Pair& p) {
 }
 
 TEST(SimRenderWater, DefaultsRenderAsBeforeTheWaterTerms) {
+  DEEPNAV_SKIP_UNLESS_X86_64_REFERENCE();
   // Hashes of renders made by the renderer of c8fce7c (before the deep-sea terms existed): the valves face
   // from 0.9 m at t = 36 s, in clear water with 6 fish (grey), in murky water with 6 fish (BGR), and in
   // murky water through a flat acrylic port (BGR). Every water key at its default must leave them as

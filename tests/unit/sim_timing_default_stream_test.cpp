@@ -12,6 +12,7 @@
 
 #include "sim_test_events.h"
 #include "tools/sim/scenario_loader.h"
+#include "tests/support/x86_64_reference.h"
 
 namespace deepnav::sim {
 namespace {
@@ -63,6 +64,7 @@ const Recorded kRecorded[] = {
 };
 
 TEST(SimTimingDefaultStream, DefaultScenarioStreamsAreBitIdenticalToBeforeTheSeaGradeTerms) {
+  DEEPNAV_SKIP_UNLESS_X86_64_REFERENCE();
   for (const Recorded& r : kRecorded) {
     Scenario s;
     std::string error;
