@@ -4,15 +4,12 @@
 #include <cmath>
 #include <fstream>
 
+#include "drivers/euroc/euroc_text.h"
+
 namespace deepnav {
 namespace {
 
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return {};
-  const auto e = s.find_last_not_of(" \t\r");
-  return s.substr(b, e - b + 1);
-}
+std::string trim(const std::string& s) { return trimEurocBlanks(s); }
 
 std::vector<std::string> splitCommas(const std::string& line) {
   std::vector<std::string> out;

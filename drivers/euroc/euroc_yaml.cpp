@@ -5,15 +5,12 @@
 #include <fstream>
 #include <sstream>
 
+#include "drivers/euroc/euroc_text.h"
+
 namespace deepnav {
 namespace {
 
-std::string trim(const std::string& s) {
-  const auto b = s.find_first_not_of(" \t\r");
-  if (b == std::string::npos) return {};
-  const auto e = s.find_last_not_of(" \t\r");
-  return s.substr(b, e - b + 1);
-}
+std::string trim(const std::string& s) { return trimEurocBlanks(s); }
 
 std::string withoutComment(const std::string& line) {
   const auto hash = line.find('#');
