@@ -18,6 +18,7 @@
 #include "drivers/replay/recording_reader.h"
 #include "tests/support/foreign_mcap_writer.h"
 #include "tests/support/ros1_bag_writer.h"
+#include "tests/support/temp_path.h"
 #include "tests/support/test_dive.h"
 
 namespace deepnav {
@@ -183,29 +184,29 @@ class ForeignReplay : public ::testing::Test {
     VehicleSetup setup;
     std::string error;
     ASSERT_TRUE(loadVehicleSetup(kBoard, &setup, &error)) << error;
-    foreign_ = ::testing::TempDir() + "foreign_dive_ros2.mcap";
+    foreign_ = testing::tempPath("foreign_dive_ros2.mcap");
     testing::ForeignMcapWriter mcap(foreign_);
     written_ = writeForeign(dive_, mcap, setup.config.ekf.q_robot_imu);
     mcap.close();
-    bag_ = ::testing::TempDir() + "foreign_dive_ros1.bag";
+    bag_ = testing::tempPath("foreign_dive_ros1.bag");
     testsupport::Ros1BagWriter bag;
     ASSERT_TRUE(bag.open(bag_, testsupport::Ros1BagWriter::Compression::kLz4));
     const Written in_bag = writeForeign(dive_, bag, setup.config.ekf.q_robot_imu);
     ASSERT_TRUE(bag.close());
     ASSERT_EQ(in_bag.frames, written_.frames);
-    map_ = ::testing::TempDir() + "foreign_map.yaml";
+    map_ = testing::tempPath("foreign_map.yaml");
     std::ofstream(map_) << kMap;
   }
   // Each replay once for the suite (the tests compare them).
   static const ReplaySummary& original() {
-    static const ReplaySummary s = replay(dive_, ::testing::TempDir() + "foreign_original", "", kBoard);
+    static const ReplaySummary s = replay(dive_, testing::tempPath("foreign_original"), "", kBoard);
     return s;
   }
   static const ReplaySummary& converted() {
     static const ReplaySummary s = replay(foreign_, convertedDir(), map_, kBoard);
     return s;
   }
-  static std::string convertedDir() { return ::testing::TempDir() + "foreign_converted"; }
+  static std::string convertedDir() { return testing::tempPath("foreign_converted"); }
 
   static std::string dive_, foreign_, bag_, map_;
   static Written written_;
@@ -229,7 +230,7 @@ TEST_F(ForeignReplay, ARos2RecordingOfTheDiveGivesTheTrajectoryOfTheOriginal) {
 }
 
 TEST_F(ForeignReplay, ARos1BagOfTheDiveGivesTheTrajectoryOfTheOriginal) {
-  const ReplaySummary from_bag = replay(bag_, ::testing::TempDir() + "foreign_converted_bag", map_, kBoard);
+  const ReplaySummary from_bag = replay(bag_, testing::tempPath("foreign_converted_bag"), map_, kBoard);
   EXPECT_EQ(from_bag.frames, original().frames);
   EXPECT_EQ(from_bag.inputs.imu, original().inputs.imu);
   EXPECT_EQ(from_bag.read.bad_messages, 0u);
@@ -238,7 +239,7 @@ TEST_F(ForeignReplay, ARos1BagOfTheDiveGivesTheTrajectoryOfTheOriginal) {
 
 TEST_F(ForeignReplay, ItsOutputRecordingReplaysBitForBitWithAPlainReplay) {
   const ReplaySummary& run = converted();
-  const ReplaySummary again = replay(convertedDir() + "/replay.mcap", ::testing::TempDir() + "foreign_again", "", "");
+  const ReplaySummary again = replay(convertedDir() + "/replay.mcap", testing::tempPath("foreign_again"), "", "");
   EXPECT_TRUE(again.reproduce);
   EXPECT_EQ(again.solutions_compared, run.ticks);
   EXPECT_EQ(again.mismatches, 0u);
@@ -254,8 +255,8 @@ TEST_F(ForeignReplay, ItsOutputRecordingReplaysBitForBitWithAPlainReplay) {
 
 TEST_F(ForeignReplay, TheCommandLineRunsItAndNamesAMissingTopic) {
   const std::string bin = std::string(DEEPNAV_BIN_DIR) + "/deepnav";
-  const std::string out = ::testing::TempDir() + "foreign_cli";
-  const std::string log = ::testing::TempDir() + "foreign_cli.log";
+  const std::string out = testing::tempPath("foreign_cli");
+  const std::string log = testing::tempPath("foreign_cli.log");
   // Dead reckoning (no vision) keeps it short: the command line's wiring is what is tested here.
   const std::string cmd = bin + " replay --topics " + map_ + " --board " + kBoard + " " + foreign_ + " --out " + out +
                           " --set vision.vo_mode=none --set markers.enabled=false > " + log + " 2>&1";
@@ -263,7 +264,7 @@ TEST_F(ForeignReplay, TheCommandLineRunsItAndNamesAMissingTopic) {
   std::ifstream first_log(log);
   ASSERT_EQ(rc, 0) << cmd << "\n" << std::string(std::istreambuf_iterator<char>(first_log), {});
   EXPECT_TRUE(std::filesystem::exists(out + "/replay.mcap"));
-  const std::string bad_map = ::testing::TempDir() + "foreign_bad_map.yaml";
+  const std::string bad_map = testing::tempPath("foreign_bad_map.yaml");
   std::ofstream(bad_map) << "topics:\n  /imu/data: {sensor: imu}\n";
   const std::string bad = bin + " replay --topics " + bad_map + " " + foreign_ + " --out " + out + "_bad > " + log +
                           " 2>&1";

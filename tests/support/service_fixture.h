@@ -23,13 +23,11 @@
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
+#include "tests/support/temp_path.h"
+
 extern char** environ;
 
 namespace deepnav::testing {
-
-inline std::string tempPath(const std::string& name) {
-  return ::testing::TempDir() + "deepnav_" + std::to_string(::getpid()) + "_" + name;
-}
 
 // board/sim/board.yaml with the panel file made absolute, the replay set to `dive`, outputs off unless
 // set, and every `settings` entry ("group.key" -> YAML scalar) applied. Returns the new file's path.

@@ -1,6 +1,4 @@
 #pragma once
-#include <unistd.h>
-
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -10,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/support/temp_path.h"
 #include "tools/sim/dive_recorder.h"
 
 namespace deepnav::testing {
@@ -19,8 +18,6 @@ namespace deepnav::testing {
 inline std::string makeTestDive(const std::string& name, double duration_s, std::uint64_t seed = 7,
                                 bool render = true,
                                 const std::vector<std::pair<std::string, std::string>>& edits = {}) {
-  // ctest runs test cases as parallel processes: each writes its own files.
-  const std::string dir = ::testing::TempDir() + "deepnav_" + std::to_string(::getpid()) + "_";
   std::ifstream in(std::string(DEEPNAV_SOURCE_DIR) + "/tools/sim/scenarios/default.yaml");
   std::stringstream text;
   text << in.rdbuf();
@@ -33,11 +30,11 @@ inline std::string makeTestDive(const std::string& name, double duration_s, std:
     EXPECT_NE(where, std::string::npos) << "default.yaml has no '" << from << "'";
     if (where != std::string::npos) yaml.replace(where, from.size(), to);
   }
-  const std::string scenario = dir + name + ".yaml";
+  const std::string scenario = tempPath(name) + ".yaml";
   std::ofstream(scenario) << yaml;
   sim::DiveRecordOptions o;
   o.scenario_path = scenario;
-  o.out_path = dir + name + ".mcap";
+  o.out_path = tempPath(name) + ".mcap";
   o.board_path = std::string(DEEPNAV_SOURCE_DIR) + "/board/sim/board.yaml";
   o.seed = seed;
   o.progress = false;
