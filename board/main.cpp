@@ -112,6 +112,11 @@ int main(int argc, char** argv) {
   st->add_option("--max-pixels", stereo.max_pixels,
                  "largest image accepted, in pixels (refused before matching; 10 MP takes a 4K pair)")
       ->check(CLI::Range(1LL, 1LL << 40));
+  st->add_option("--preset", stereo.elas_preset, "ELAS parameters: dense (every pixel) | robotics (the vehicle's)")
+      ->check(CLI::IsMember({"dense", "robotics"}));
+  st->add_option("--repeat", stereo.repeat,
+                 "match the pair N times and print the min and median compute time (image I/O excluded)")
+      ->check(CLI::Range(1, 100000));
 
   std::string iqa_path;
   auto* iq = app.add_subcommand("iqa", "MDM image quality of one image, as JSON");

@@ -1,9 +1,12 @@
 #include "board/cli/stereo_command.h"
 
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <exception>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <opencv2/imgcodecs.hpp>
 
@@ -17,7 +20,7 @@ namespace {
 std::unique_ptr<DisparityEstimator> makeEstimator(const StereoCommandOptions& o, int w, int h) {
   if (o.method == "elas") {
     auto elas = std::make_unique<ElasDisparity>();
-    ElasParams p = ElasParams::dense();
+    ElasParams p = o.elas_preset == "robotics" ? ElasParams::robotics() : ElasParams::dense();
     p.num_disparities = o.max_disparity_px;
     if (!elas->init(p, w, h)) return nullptr;
     return elas;
@@ -51,6 +54,32 @@ std::string checkPairSize(const StereoCommandOptions& o, const cv::Mat& left) {
                              : " needs an image wider than 16 px");
 }
 
+// Matches the pair max(1, repeat) times on the same estimator (its buffers warm after the first call);
+// *call_ms: the wall time of each compute() call.
+bool computeTimed(const StereoCommandOptions& o, const cv::Mat& left, const cv::Mat& right,
+                  DisparityEstimator* estimator, cv::Mat* disparity, std::vector<double>* call_ms) {
+  const int calls = std::max(1, o.repeat);
+  call_ms->reserve(static_cast<std::size_t>(calls));
+  for (int i = 0; i < calls; ++i) {
+    const auto start = std::chrono::steady_clock::now();
+    const bool ok = estimator->compute(left, right, disparity);
+    const auto stop = std::chrono::steady_clock::now();
+    if (!ok) return false;
+    call_ms->push_back(std::chrono::duration<double, std::milli>(stop - start).count());
+  }
+  return true;
+}
+
+// Median: the middle call, or the mean of the two middle ones for an even count.
+void printTimes(const StereoCommandOptions& o, std::vector<double>* call_ms) {
+  std::sort(call_ms->begin(), call_ms->end());
+  const std::size_t n = call_ms->size();
+  const double median = n % 2 == 1 ? (*call_ms)[n / 2] : 0.5 * ((*call_ms)[n / 2 - 1] + (*call_ms)[n / 2]);
+  const std::string what = o.method == "elas" ? "elas " + o.elas_preset : o.method;
+  std::printf("%s compute time over %zu calls (image I/O excluded): min %.2f ms, median %.2f ms, max %.2f ms\n",
+              what.c_str(), n, call_ms->front(), median, call_ms->back());
+}
+
 int runStereo(const StereoCommandOptions& o) {
   const cv::Mat left = cv::imread(o.left_path, cv::IMREAD_COLOR);
   const cv::Mat right = cv::imread(o.right_path, cv::IMREAD_COLOR);
@@ -68,11 +97,13 @@ int runStereo(const StereoCommandOptions& o) {
   }
   const auto estimator = makeEstimator(o, left.cols, left.rows);
   cv::Mat disparity;
-  if (!estimator || !estimator->compute(left, right, &disparity)) {
+  std::vector<double> call_ms;
+  if (!estimator || !computeTimed(o, left, right, estimator.get(), &disparity, &call_ms)) {
     std::fprintf(stderr, "deepnav stereo: %s failed on this pair (max disparity %d)\n", o.method.c_str(),
                  o.max_disparity_px);
     return 1;
   }
+  if (o.repeat > 0) printTimes(o, &call_ms);
   std::string error;
   if (!writePfm(o.out_path, disparity, &error)) {
     std::fprintf(stderr, "deepnav stereo: %s\n", error.c_str());

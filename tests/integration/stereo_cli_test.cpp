@@ -1,5 +1,6 @@
 // `deepnav stereo` as a user runs it, on the real Middlebury pairs: the PFM it writes is accurate.
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -105,6 +106,57 @@ TEST(StereoCliArguments, APairLargerThanMaxPixelsIsRefusedBeforeMatching) {
   EXPECT_NE(text.find("400x300 (120000 pixels) is larger than --max-pixels 100000"), std::string::npos) << text;
   std::tie(code, text) = runStereo(pair + " --method elas --max-pixels 120000" + out);
   EXPECT_EQ(code, 0) << text;
+}
+
+// `deepnav stereo ARGS` with stdout captured: {exit code, stdout}.
+std::pair<int, std::string> runStereoOut(const std::string& args) {
+  const std::string out = ::testing::TempDir() + "stereo_cli_stdout.txt";
+  const std::string cmd = std::string(DEEPNAV_BIN_DIR) + "/deepnav stereo " + args + " > " + out + " 2>&1";
+  const int status = std::system(cmd.c_str());
+  std::ifstream in(out);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text};
+}
+
+cv::Mat readMap(const std::string& path) {
+  cv::Mat map;
+  std::string error;
+  EXPECT_TRUE(readPfm(path, &map, &error)) << error;
+  return map;
+}
+
+// Issue 20: --repeat N matches the pair N times and prints min <= median <= max of the compute time; the map
+// it writes is the one a single call writes (the estimator's buffers are reused, not its results).
+TEST(StereoCliArguments, RepeatPrintsMinAndMedianComputeTimeAndTheSameMap) {
+  const std::string pair = randomPair(200, 120);
+  const std::string once = ::testing::TempDir() + "stereo_cli_once.pfm";
+  const std::string repeated = ::testing::TempDir() + "stereo_cli_repeated.pfm";
+  for (const char* preset : {"dense", "robotics"}) {
+    const std::string base = pair + " --method elas --max-disp 32 --preset " + preset;
+    auto [code, text] = runStereoOut(base + " --out " + once);
+    ASSERT_EQ(code, 0) << text;
+    EXPECT_EQ(text.find("compute time"), std::string::npos) << text;  // no timing unless asked
+    std::tie(code, text) = runStereoOut(base + " --repeat 5 --out " + repeated);
+    ASSERT_EQ(code, 0) << text;
+    const std::string head = std::string("elas ") + preset + " compute time over 5 calls (image I/O excluded): min ";
+    const auto at = text.find(head);
+    ASSERT_NE(at, std::string::npos) << text;
+    double min_ms = -1, median_ms = -1, max_ms = -1;
+    ASSERT_EQ(std::sscanf(text.c_str() + at + head.size(), "%lf ms, median %lf ms, max %lf ms", &min_ms, &median_ms,
+                          &max_ms),
+              3)
+        << text;
+    EXPECT_GT(min_ms, 0.0);
+    EXPECT_LE(min_ms, median_ms);
+    EXPECT_LE(median_ms, max_ms);
+    const cv::Mat a = readMap(once), b = readMap(repeated);
+    ASSERT_EQ(a.size(), b.size());
+    EXPECT_EQ(cv::norm(a != b, cv::NORM_L1), 0.0) << preset;  // +inf == +inf for invalid pixels
+  }
+  const auto [code, text] = runStereoOut(pair + " --method sgbm --max-disp 32 --repeat 2 --out " + once);
+  EXPECT_EQ(code, 0) << text;
+  EXPECT_NE(text.find("sgbm compute time over 2 calls"), std::string::npos) << text;
+  EXPECT_NE(runStereoOut(pair + " --repeat 0 --out " + once).first, 0);
 }
 
 }  // namespace

@@ -32,7 +32,15 @@ int chooseStride(std::size_t band_px, std::size_t image_px, int radius_px, float
   return 8;
 }
 
+// First lattice offset in [-reach, reach] (step stride) that keeps centre + offset >= 0.
+int firstOffset(int centre, int reach, int stride) {
+  const int offset = -reach;
+  if (centre + offset >= 0) return offset;
+  return offset + (-(centre + offset) + stride - 1) / stride * stride;
+}
+
 }  // namespace
+
 
 bool DisparityEdgeRefiner::allocate(int width_px, int height_px, int num_disparities) {
   if (width_px < 1 || height_px < 1 || num_disparities < 1 || num_disparities >= kNoBin) {
@@ -47,6 +55,7 @@ bool DisparityEdgeRefiner::allocate(int width_px, int height_px, int num_dispari
   rows_.assign(pixels, 0);
   bin_.assign(pixels, kNoBin);
   weight_lut_.assign(kMaxColourDiff + 1, 0.0f);
+  weight_by_grey_diff_.assign(2 * 255 + 1, 0.0f);
   hist_w_.assign(bins_, 0.0f);
   hist_wd_.assign(bins_, 0.0f);
   source_px_.create(height_px, width_px, CV_32F);
@@ -83,40 +92,64 @@ void DisparityEdgeRefiner::dilateJumps(int r) {
   for (int u = 0; u < w; ++u) dilateLine(rows_.data() + u, band_.data() + u, height_px_, w, r);
 }
 
+// The histograms are zero between calls: only the bins a window touched are scanned and cleared
+// (the other bins hold zeros, which change neither the running sum nor the median), in the same
+// order and with the same float operations as a scan of every bin.
 template <int kChannels>
 float DisparityEdgeRefiner::weightedMedian(const cv::Mat& guide, int u, int v, int reach) {
   constexpr int kDiffScale = kChannels == 1 ? 3 : 1;  // grey differences on the colour scale
   const std::uint8_t* centre = guide.ptr<std::uint8_t>(v) + u * kChannels;
-  std::fill(hist_w_.begin(), hist_w_.end(), 0.0f);
-  std::fill(hist_wd_.begin(), hist_wd_.end(), 0.0f);
+  const int stride = stride_px_;
+  const int dv_first = firstOffset(v, reach, stride);
+  const int du_first = firstOffset(u, reach, stride);
+  const int v_last = std::min(v + reach, height_px_ - 1);
+  const int u_last = std::min(u + reach, width_px_ - 1);
+  float* hist_w = hist_w_.data();
+  float* hist_wd = hist_wd_.data();
+  // grey: the weight straight from the signed difference (no abs, no scale); colour: from the l1 sum
+  const float* lut_grey = weight_by_grey_diff_.data() + 255 - centre[0];
+  const float* lut = weight_lut_.data();
+  int bin_lo = bins_, bin_hi = -1;
   float total = 0.0f;
-  for (int dv = -reach; dv <= reach; dv += stride_px_) {
-    const int v2 = v + dv;
-    if (v2 < 0 || v2 >= height_px_) continue;
-    const std::size_t row = static_cast<std::size_t>(v2) * width_px_;
+  for (int v2 = v + dv_first; v2 <= v_last; v2 += stride) {
+    const std::uint16_t* bin_row = bin_.data() + static_cast<std::size_t>(v2) * width_px_;
     const float* d_row = source_px_.ptr<float>(v2);
     const std::uint8_t* g_row = guide.ptr<std::uint8_t>(v2);
-    for (int du = -reach; du <= reach; du += stride_px_) {
-      const int u2 = u + du;
-      if (u2 < 0 || u2 >= width_px_) continue;
-      const int bin = bin_[row + u2];
+    for (int u2 = u + du_first; u2 <= u_last; u2 += stride) {
+      const int bin = bin_row[u2];
       if (bin == kNoBin) continue;
       const std::uint8_t* q = g_row + u2 * kChannels;
-      int diff = 0;
-      for (int c = 0; c < kChannels; ++c) diff += std::abs(q[c] - centre[c]);
-      const float wq = weight_lut_[diff * kDiffScale];
-      hist_w_[bin] += wq;
-      hist_wd_[bin] += wq * d_row[u2];
+      float wq;
+      if constexpr (kChannels == 1) {
+        wq = lut_grey[q[0]];
+      } else {
+        int diff = 0;
+        for (int c = 0; c < kChannels; ++c) diff += std::abs(q[c] - centre[c]);
+        wq = lut[diff * kDiffScale];
+      }
+      hist_w[bin] += wq;
+      hist_wd[bin] += wq * d_row[u2];
       total += wq;
+      bin_lo = std::min(bin_lo, bin);
+      bin_hi = std::max(bin_hi, bin);
     }
   }
   // the median bin, reported as the weighted mean of its members (keeps sub-pixel values)
+  float result = source_px_.at<float>(v, u);
   float acc = 0.0f;
-  for (int b = 0; b < bins_; ++b) {
-    acc += hist_w_[b];
-    if (hist_w_[b] > 0.0f && acc >= 0.5f * total) return hist_wd_[b] / hist_w_[b];
+  const float half = 0.5f * total;
+  for (int b = bin_lo; b <= bin_hi; ++b) {
+    acc += hist_w[b];
+    if (hist_w[b] > 0.0f && acc >= half) {
+      result = hist_wd[b] / hist_w[b];
+      break;
+    }
   }
-  return source_px_.at<float>(v, u);
+  if (bin_hi >= bin_lo) {
+    std::fill(hist_w + bin_lo, hist_w + bin_hi + 1, 0.0f);
+    std::fill(hist_wd + bin_lo, hist_wd + bin_hi + 1, 0.0f);
+  }
+  return result;
 }
 
 template <int kChannels>
@@ -138,6 +171,7 @@ void DisparityEdgeRefiner::apply(const cv::Mat& guide, const EdgeRefineParams& p
     for (int i = 0; i <= kMaxColourDiff; ++i) {
       weight_lut_[i] = std::exp(-static_cast<float>(i) / params.sigma);
     }
+    for (int i = -255; i <= 255; ++i) weight_by_grey_diff_[i + 255] = weight_lut_[3 * std::abs(i)];
     lut_sigma_ = params.sigma;
   }
   disparity_px->copyTo(source_px_);

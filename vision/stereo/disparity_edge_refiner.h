@@ -48,7 +48,8 @@ class DisparityEdgeRefiner {
   std::vector<std::uint8_t> rows_;  // scratch of the separable dilation
   std::vector<std::uint16_t> bin_;  // integer disparity of each pixel, kNoBin when invalid
   std::vector<float> weight_lut_;   // exp(-diff / sigma), diff = 0 .. 765
-  std::vector<float> hist_w_;       // per integer disparity: sum of weights
+  std::vector<float> weight_by_grey_diff_;  // weight_lut_[3 |g|], g = grey difference -255 .. 255, at g + 255
+  std::vector<float> hist_w_;       // per integer disparity: sum of weights (zero between windows)
   std::vector<float> hist_wd_;      // per integer disparity: sum of weight * d
   cv::Mat source_px_;               // the input map, read while the output is written
   float lut_sigma_ = -1.0f;

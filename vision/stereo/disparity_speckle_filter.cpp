@@ -12,7 +12,7 @@ bool DisparitySpeckleFilter::allocate(int width_px, int height_px) {
   height_px_ = height_px;
   const std::size_t pixels = static_cast<std::size_t>(width_px) * height_px;
   label_.assign(pixels, 0);
-  stack_.assign(pixels, 0);
+  stack_.assign(2 * pixels, 0);
   members_.assign(pixels, 0);
   return true;
 }
@@ -21,22 +21,30 @@ bool DisparitySpeckleFilter::allocate(int width_px, int height_px) {
 int DisparitySpeckleFilter::floodSegment(const cv::Mat& disparity_px, int seed, float sim_px,
                                          std::int32_t label) {
   const float* d = disparity_px.ptr<float>(0);
+  const int last_row_start = (height_px_ - 1) * width_px_;
   int top = 0;
   int size = 0;
-  stack_[top++] = seed;
+  const auto push = [&](int i, int u) {
+    stack_[top++] = i;
+    stack_[top++] = u;
+  };
+  push(seed, seed % width_px_);
   label_[seed] = label;
   while (top > 0) {
+    const int u = stack_[--top];
     const int i = stack_[--top];
     members_[size++] = i;
-    const int u = i % width_px_;
-    const int v = i / width_px_;
-    const int neighbours[4] = {u > 0 ? i - 1 : -1, u + 1 < width_px_ ? i + 1 : -1,
-                               v > 0 ? i - width_px_ : -1, v + 1 < height_px_ ? i + width_px_ : -1};
-    for (int n : neighbours) {
-      if (n < 0 || label_[n] != 0 || d[n] < 0.0f || std::fabs(d[n] - d[i]) > sim_px) continue;
+    const float d_i = d[i];
+    // left, right, up, down, the order of a plain neighbour list
+    const auto visit = [&](int n, int un) {
+      if (label_[n] != 0 || d[n] < 0.0f || std::fabs(d[n] - d_i) > sim_px) return;
       label_[n] = label;
-      stack_[top++] = n;
-    }
+      push(n, un);
+    };
+    if (u > 0) visit(i - 1, u - 1);
+    if (u + 1 < width_px_) visit(i + 1, u + 1);
+    if (i >= width_px_) visit(i - width_px_, u);
+    if (i < last_row_start) visit(i + width_px_, u);
   }
   return size;
 }

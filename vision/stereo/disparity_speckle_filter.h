@@ -20,7 +20,7 @@ class DisparitySpeckleFilter {
   int width_px_ = 0;
   int height_px_ = 0;
   std::vector<std::int32_t> label_;
-  std::vector<std::int32_t> stack_;
+  std::vector<std::int32_t> stack_;  // pixel index and column of each pixel to visit (no division)
   std::vector<std::int32_t> members_;
 };
 

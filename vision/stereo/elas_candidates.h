@@ -23,6 +23,7 @@ class ElasCandidates {
     return merged_.data() + static_cast<std::size_t>(cell) * kWords;
   }
   int words() const { return words_; }
+  int gridSize() const { return grid_size_px_; }
 
  private:
   int grid_size_px_ = 1;

@@ -4,6 +4,8 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
+#include "vision/stereo/sad16.h"
+
 namespace deepnav {
 
 // Histogram of |horizontal Sobel response| (0 .. 4 * 255), the image's gradient statistics.
@@ -42,8 +44,13 @@ class ElasDescriptorImage {
   std::vector<std::uint8_t> descriptors_;
 };
 
-// l1 norm of a descriptor about "no gradient": how much texture a pixel has.
-int descriptorTexture(const std::uint8_t* descriptor);
+// l1 norm of a descriptor about "no gradient": how much texture a pixel has (inline: the dense
+// matcher asks it for every pixel).
+inline int descriptorTexture(const std::uint8_t* descriptor) {
+  alignas(16) static constexpr std::uint8_t kFlat[16] = {128, 128, 128, 128, 128, 128, 128, 128,
+                                                         128, 128, 128, 128, 128, 128, 128, 128};
+  return sad16(descriptor, kFlat);
+}
 
 // Contrast normalisation: the gain mapping the 90th percentile of |gx| (over both views) to
 // target, at most max_gain. Underwater contrast changes with turbidity, light and range; a fixed
