@@ -8,20 +8,13 @@
 #include <utility>
 
 #include "base/so3.h"
-#include "vision/orbvo/keyframe_thumbnail.h"
-#include "vision/orbvo/projection_search.h"
+#include "vision/orbvo/guided_stereo.h"
 #include "vision/orbvo/relative_camera_pose.h"
-#include "vision/orbvo/stereo_projection.h"
 
 namespace deepnav {
 namespace {
 
-constexpr double kMinProjectionDepthM = 0.05;
-
-bool insideImage(const StereoRig& rig, const Eigen::Vector2d& uv_px) {
-  return uv_px.x() >= 0.0 && uv_px.y() >= 0.0 && uv_px.x() <= rig.width_px - 1.0 &&
-         uv_px.y() <= rig.height_px - 1.0;
-}
+using Start = FramePoseEstimator::Start;
 
 // The grey image of `image` (CV_8UC1 as is, CV_8UC3 converted into the preallocated *grey).
 const cv::Mat* greyOf(const cv::Mat& image, cv::Mat* grey) {
@@ -58,16 +51,25 @@ bool OrbStereoOdometry::init(const OrbVoConfig& config, const StereoRig& rig, st
     *error = "orbvo right extractor: bad configuration";
     return false;
   }
-  capacity_ = extractor_.capacity();
+  const int capacity = extractor_.capacity();
   if (!stereo_.init(config.stereo, rig, right_extractor_.capacity(),
                     config.extractor.scale_factor)) {
     *error = "orbvo stereo: bad band, depth range, ratio or SAD window";
     return false;
   }
-  const int window = config.local_keyframes;
-  if (!grid_.init(rig.width_px, rig.height_px, 16, capacity_) || !pnp_.init(capacity_) ||
-      !bundle_adjuster_.init(window, window * capacity_, window * capacity_) ||
-      !map_.init(config.max_keyframes, capacity_, config.max_map_points)) {
+  std::vector<double> level_scale(extractor_.levels(), 1.0);
+  level_sigma_px_.assign(extractor_.levels(), config.pixel_sigma_px);
+  for (int l = 0; l < extractor_.levels(); ++l) {
+    level_scale[l] = extractor_.levelScale(l);
+    level_sigma_px_[l] = config.pixel_sigma_px * level_scale[l];
+  }
+  if (!search_.init(rig, level_scale, config.local_keyframes, config.frame_search,
+                    config.map_search, capacity) ||
+      !pose_estimator_.init(rig, config.pnp, config.refiner, level_sigma_px_, capacity) ||
+      !window_adjustment_.init(rig, config.bundle, config.local_keyframes, level_sigma_px_,
+                               capacity) ||
+      !relocaliser_.init(config.reloc, config.max_keyframes, capacity) ||
+      !map_.init(config.max_keyframes, capacity, config.max_map_points)) {
     *error = "orbvo: buffer sizes";
     return false;
   }
@@ -75,46 +77,13 @@ bool OrbStereoOdometry::init(const OrbVoConfig& config, const StereoRig& rig, st
   grey_right_.create(rig.height_px, rig.width_px, CV_8UC1);
   right_features_.reserve(right_extractor_.capacity());
   right_descriptors_.reserve(right_extractor_.capacity());
-  reserveFrame(&cur_, capacity_);
-  reserveFrame(&prev_, capacity_);
-  level_scale_.assign(extractor_.levels(), 1.0);
-  level_sigma_px_.assign(extractor_.levels(), config.pixel_sigma_px);
-  for (int l = 0; l < extractor_.levels(); ++l) {
-    level_scale_[l] = extractor_.levelScale(l);
-    level_sigma_px_[l] = config.pixel_sigma_px * level_scale_[l];
-  }
-  observations_.reserve(capacity_);
-  saved_map_point_.reserve(capacity_);
-  saved_match_distance_.reserve(capacity_);
-  observation_feature_.reserve(capacity_);
-  inlier_.assign(capacity_, 0);
-  ba_R_.assign(window, Eigen::Matrix3d::Identity());
-  ba_t_.assign(window, Eigen::Vector3d::Zero());
-  ba_points_.assign(window * capacity_, Eigen::Vector3d::Zero());
-  ba_point_id_.assign(window * capacity_, -1);
-  ba_observations_.assign(window * capacity_, BaObservation());
-  ba_source_age_.assign(window * capacity_, 0);
-  ba_source_feature_.assign(window * capacity_, 0);
-  ba_outlier_.assign(window * capacity_, 0);
-  thumbnail_scratch_.create(kThumbnailHeightPx, kThumbnailWidthPx, CV_8UC1);
-  thumbnail_.assign(kThumbnailSize, 0.0f);
-  reloc_similarity_.assign(config.max_keyframes, 0.0f);
-  reloc_score_.assign(config.max_keyframes, 0);
-  reloc_owner_.assign(capacity_, -1);
-  reloc_owner_distance_.assign(capacity_, 0);
+  cur_.reserve(capacity);
+  prev_.reserve(capacity);
+  saved_map_point_.reserve(capacity);
+  saved_match_distance_.reserve(capacity);
   ready_ = true;
   reset();
   return true;
-}
-
-void OrbStereoOdometry::reserveFrame(FrameState* frame, int capacity) const {
-  frame->features.reserve(capacity);
-  frame->descriptors.reserve(capacity);
-  frame->u_right_px.reserve(capacity);
-  frame->p_in_cam_m.reserve(capacity);
-  frame->map_point.reserve(capacity);
-  frame->match_distance.reserve(capacity);
-  frame->available.reserve(capacity);
 }
 
 void OrbStereoOdometry::reset() {
@@ -124,8 +93,7 @@ void OrbStereoOdometry::reset() {
   lost_frames_ = 0;
   frames_since_keyframe_ = 0;
   has_velocity_ = false;
-  anchor_keyframe_id_ = -1;
-  anchor_until_keyframe_id_ = -1;
+  search_.clearAnchor();
   last_tracked_.has_prior = false;
   prev_.features.clear();
   prev_.map_point.clear();
@@ -200,10 +168,7 @@ bool OrbStereoOdometry::process(TimeUs t_us, const cv::Mat& left, const cv::Mat&
     t_velocity_ = cur_.pose.p_world_in_cam_m - R_velocity_ * prev_.pose.p_world_in_cam_m;
     has_velocity_ = true;
   }
-  last_tracked_.t_us = t_us;
-  last_tracked_.pose = cur_.pose;
-  last_tracked_.has_prior = prior_cur_;
-  last_tracked_.T_odom_cam_prior = prior_cur_T_odom_cam_;
+  rememberTracked();
   lost_ = false;
   lost_frames_ = 0;
   fillOutput(out);
@@ -258,18 +223,22 @@ bool OrbStereoOdometry::startMap(OrbVoOutput* out) {
   lost_ = false;
   lost_frames_ = 0;
   has_velocity_ = false;
-  anchor_keyframe_id_ = -1;
+  search_.clearAnchor();
   insertKeyframe();
   cur_.tracked = map_.mapPointCount();
-  last_tracked_.t_us = cur_.t_us;
-  last_tracked_.pose = cur_.pose;
-  last_tracked_.has_prior = prior_cur_;
-  last_tracked_.T_odom_cam_prior = prior_cur_T_odom_cam_;
+  rememberTracked();
   out->status = OrbVoStatus::kInitialised;
   out->tracked_features = cur_.tracked;
   fillOutput(out);
   std::swap(prev_, cur_);
   return true;
+}
+
+void OrbStereoOdometry::rememberTracked() {
+  last_tracked_.t_us = cur_.t_us;
+  last_tracked_.pose = cur_.pose;
+  last_tracked_.has_prior = prior_cur_;
+  last_tracked_.T_odom_cam_prior = prior_cur_T_odom_cam_;
 }
 
 bool OrbStereoOdometry::trackFrame() {
@@ -278,27 +247,28 @@ bool OrbStereoOdometry::trackFrame() {
     predicted.R_cam_world = R_velocity_ * prev_.pose.R_cam_world;
     predicted.p_world_in_cam_m = R_velocity_ * prev_.pose.p_world_in_cam_m + t_velocity_;
   }
-  grid_.build(cur_.features);
-  int matches = searchPreviousFrame(predicted, config_.frame_search.radius_px);
-  if (matches < config_.min_frame_matches) {
-    clearAssociations();
-    matches =
-        searchPreviousFrame(predicted, config_.frame_search.radius_px * config_.frame_search_widen);
+  search_.index(cur_);
+  const double radius_px = config_.frame_search.radius_px;
+  if (search_.searchPreviousFrame(prev_, predicted, radius_px, &map_, &cur_) <
+      config_.min_frame_matches) {
+    cur_.clearAssociations();
+    search_.searchPreviousFrame(prev_, predicted, radius_px * config_.frame_search_widen, &map_,
+                                &cur_);
   }
   CameraPoseEstimate pose = predicted;
-  if (!estimatePose(PoseStart::kRansacOrGiven, &pose)) {
+  if (!estimatePose(Start::kRansacOrGiven, &pose)) {
     // The previous frame alone is not enough (e.g. after a jerk): try the local map around the
     // prediction.
-    clearAssociations();
+    cur_.clearAssociations();
     pose = predicted;
-    if (searchLocalMap(pose) < config_.refiner.min_inliers ||
-        !estimatePose(PoseStart::kRansacOrGiven, &pose)) {
+    if (search_.searchLocalMap(pose, &map_, &cur_) < config_.refiner.min_inliers ||
+        !estimatePose(Start::kRansacOrGiven, &pose)) {
       return false;
     }
   }
-  searchLocalMap(pose);
+  search_.searchLocalMap(pose, &map_, &cur_);
   completeStereo(pose);
-  if (!estimatePose(PoseStart::kGiven, &pose)) return false;
+  if (!estimatePose(Start::kGiven, &pose)) return false;
   cur_.pose = pose;
   return cur_.tracked >= config_.min_tracked;
 }
@@ -312,7 +282,8 @@ bool OrbStereoOdometry::reselectWithPrior() {
   const OrbMotionPriorConfig& c = config_.motion_prior;
   if (!c.enabled || !prior_cur_ || !last_tracked_.has_prior) return false;
   const Eigen::Isometry3d T_a_b = last_tracked_.T_odom_cam_prior.inverse() * prior_cur_T_odom_cam_;
-  if (priorDisagreement(relativeCameraPose(last_tracked_.pose, cur_.pose), T_a_b, c) <= c.consistency_chi2) {
+  if (priorDisagreement(relativeCameraPose(last_tracked_.pose, cur_.pose), T_a_b, c) <=
+      c.consistency_chi2) {
     return false;
   }
   saved_map_point_.assign(cur_.map_point.begin(), cur_.map_point.end());
@@ -320,22 +291,24 @@ bool OrbStereoOdometry::reselectWithPrior() {
   const CameraPoseEstimate saved_pose = cur_.pose;
   const int saved_tracked = cur_.tracked;
   const CameraPoseEstimate predicted = predictCameraPose(last_tracked_.pose, T_a_b);
-  clearAssociations();
-  searchPreviousFrame(predicted, config_.frame_search.radius_px);
-  searchLocalMap(predicted);
+  cur_.clearAssociations();
+  search_.searchPreviousFrame(prev_, predicted, config_.frame_search.radius_px, &map_, &cur_);
+  search_.searchLocalMap(predicted, &map_, &cur_);
   for (std::size_t j = 0; j < cur_.map_point.size(); ++j) {
     const int m = cur_.map_point[j];
     if (m < 0) continue;
     const OrbFeature& f = cur_.features[j];
-    if (!withinPriorGate(rig_, predicted, map_.point(m).p_in_world_m, {f.u_px, f.v_px}, sigmaOfLevel(f.level), c)) {
+    if (!withinPriorGate(rig_, predicted, map_.point(m).p_in_world_m, {f.u_px, f.v_px},
+                         level_sigma_px_[f.level], c)) {
       cur_.map_point[j] = -1;
       cur_.match_distance[j] = std::numeric_limits<int>::max();
     }
   }
   completeStereo(predicted);
   CameraPoseEstimate pose = predicted;
-  if (estimatePose(PoseStart::kGiven, &pose) && cur_.tracked >= config_.min_tracked &&
-      priorDisagreement(relativeCameraPose(last_tracked_.pose, pose), T_a_b, c) <= c.consistency_chi2) {
+  if (estimatePose(Start::kGiven, &pose) && cur_.tracked >= config_.min_tracked &&
+      priorDisagreement(relativeCameraPose(last_tracked_.pose, pose), T_a_b, c) <=
+          c.consistency_chi2) {
     cur_.pose = pose;
     prior_reselected_ = true;
     return true;
@@ -348,169 +321,9 @@ bool OrbStereoOdometry::reselectWithPrior() {
   return false;
 }
 
-// Guided stereo: a tracked corner without a right match gets one from the ZSAD search around the
-// disparity d = fx b / z its map point predicts (the descriptor matching along the whole row loses
-// many corners in low-contrast images; here the search spans a few pixels). Returns the count.
 int OrbStereoOdometry::completeStereo(const CameraPoseEstimate& pose) {
-  int added = 0;
-  for (std::size_t j = 0; j < cur_.map_point.size(); ++j) {
-    const int m = cur_.map_point[j];
-    if (m < 0 || cur_.u_right_px[j] >= 0.0f) continue;
-    const Eigen::Vector3d p_in_cam_m =
-        pose.R_cam_world * map_.point(m).p_in_world_m + pose.p_world_in_cam_m;
-    if (p_in_cam_m.z() < config_.stereo.min_depth_m || p_in_cam_m.z() > config_.stereo.max_depth_m)
-      continue;
-    const OrbFeature& f = cur_.features[j];
-    const double predicted_disparity_px = rig_.fx_px * rig_.baseline_m / p_in_cam_m.z();
-    double u_right = 0.0;
-    if (!stereo_.refineRightColumn(cur_left_, cur_right_, f.u_px, f.v_px,
-                                   f.u_px - predicted_disparity_px, &u_right)) {
-      continue;
-    }
-    const double disparity_px = f.u_px - u_right;
-    if (disparity_px <= 0.0) continue;
-    cur_.u_right_px[j] = static_cast<float>(u_right);
-    cur_.p_in_cam_m[j] = triangulateStereo(rig_, f.u_px, f.v_px, disparity_px);
-    ++added;
-  }
-  return added;
-}
-
-void OrbStereoOdometry::clearAssociations() {
-  std::fill(cur_.map_point.begin(), cur_.map_point.end(), -1);
-  std::fill(cur_.match_distance.begin(), cur_.match_distance.end(),
-            std::numeric_limits<int>::max());
-  std::fill(cur_.available.begin(), cur_.available.end(), std::uint8_t{1});
-}
-
-int OrbStereoOdometry::searchPreviousFrame(const CameraPoseEstimate& predicted, double radius_px) {
-  const int stamp = map_.nextStamp();
-  ProjectionSearchConfig search = config_.frame_search;
-  search.radius_px = radius_px;
-  for (std::size_t i = 0; i < prev_.map_point.size(); ++i) {
-    const int m = prev_.map_point[i];
-    if (m < 0) continue;
-    MapPoint& point = map_.point(m);
-    if (!point.alive || point.visit_stamp == stamp) continue;
-    point.visit_stamp = stamp;
-    const Eigen::Vector3d p_in_cam_m =
-        predicted.R_cam_world * point.p_in_world_m + predicted.p_world_in_cam_m;
-    if (p_in_cam_m.z() < kMinProjectionDepthM) continue;
-    const Eigen::Vector2d uv = projectLeft(rig_, p_in_cam_m);
-    if (!insideImage(rig_, uv)) continue;
-    const ProjectionMatch match = searchNearProjection(
-        grid_, cur_.features, cur_.descriptors, cur_.available, level_scale_.data(), uv,
-        prev_.features[i].level, prev_.descriptors[i], search);
-    if (match.index < 0 || match.distance >= cur_.match_distance[match.index]) continue;
-    cur_.map_point[match.index] = m;
-    cur_.match_distance[match.index] = match.distance;
-  }
-  int matches = 0;
-  for (std::size_t j = 0; j < cur_.map_point.size(); ++j) matches += cur_.map_point[j] >= 0;
-  return matches;
-}
-
-// Projects the points of the local keyframes (and of the relocalisation anchor) not matched yet.
-int OrbStereoOdometry::searchLocalMap(const CameraPoseEstimate& pose) {
-  const int stamp = map_.nextStamp();
-  for (std::size_t j = 0; j < cur_.map_point.size(); ++j) {
-    const int m = cur_.map_point[j];
-    cur_.available[j] = m < 0;
-    if (m >= 0) map_.point(m).visit_stamp = stamp;
-  }
-  const int local = std::min(config_.local_keyframes, map_.keyframeCount());
-  for (int age = 0; age < local; ++age) searchKeyframePoints(map_.keyframe(age), pose, stamp);
-  if (anchor_keyframe_id_ >= 0 && map_.keyframeCount() > 0) {
-    const int newest_id = map_.keyframe(0).id;
-    if (newest_id >= anchor_until_keyframe_id_) {
-      anchor_keyframe_id_ = -1;
-    } else {
-      constexpr int kAnchorNeighbours = 2;
-      for (int id = anchor_keyframe_id_ - kAnchorNeighbours;
-           id <= anchor_keyframe_id_ + kAnchorNeighbours; ++id) {
-        const int age = newest_id - id;
-        if (age < local || age >= map_.keyframeCount() || map_.keyframe(age).id != id) continue;
-        searchKeyframePoints(map_.keyframe(age), pose, stamp);
-      }
-    }
-  }
-  int matches = 0;
-  for (std::size_t j = 0; j < cur_.map_point.size(); ++j) matches += cur_.map_point[j] >= 0;
-  return matches;
-}
-
-void OrbStereoOdometry::searchKeyframePoints(const Keyframe& kf, const CameraPoseEstimate& pose,
-                                             int stamp) {
-  for (const int m : kf.map_point) {
-    if (m < 0) continue;
-    MapPoint& point = map_.point(m);
-    if (!point.alive || point.visit_stamp == stamp) continue;
-    point.visit_stamp = stamp;
-    const Eigen::Vector3d p_in_cam_m =
-        pose.R_cam_world * point.p_in_world_m + pose.p_world_in_cam_m;
-    if (p_in_cam_m.z() < kMinProjectionDepthM) continue;
-    const Eigen::Vector2d uv = projectLeft(rig_, p_in_cam_m);
-    if (!insideImage(rig_, uv)) continue;
-    const ProjectionMatch match = searchNearProjection(
-        grid_, cur_.features, cur_.descriptors, cur_.available, level_scale_.data(), uv,
-        point.level, point.descriptor, config_.map_search);
-    if (match.index < 0 || match.distance >= cur_.match_distance[match.index]) continue;
-    cur_.map_point[match.index] = m;
-    cur_.match_distance[match.index] = match.distance;
-  }
-}
-
-// Pose from the current associations; drops the associations that end as outliers.
-bool OrbStereoOdometry::estimatePose(PoseStart start, CameraPoseEstimate* pose) {
-  observations_.clear();
-  observation_feature_.clear();
-  for (std::size_t j = 0; j < cur_.map_point.size(); ++j) {
-    const int m = cur_.map_point[j];
-    if (m < 0) continue;
-    const OrbFeature& f = cur_.features[j];
-    PoseObservation o;
-    o.p_in_world_m = map_.point(m).p_in_world_m;
-    o.uv_px = {f.u_px, f.v_px};
-    o.u_right_px = cur_.u_right_px[j];
-    o.sigma_px = sigmaOfLevel(f.level);
-    observations_.push_back(o);
-    observation_feature_.push_back(static_cast<int>(j));
-  }
-  int n = static_cast<int>(observations_.size());
-  if (n < config_.refiner.min_inliers) return false;
-  CameraPoseEstimate estimate = *pose;
-  if (start != PoseStart::kGiven) {
-    pnp_.clear();
-    for (const PoseObservation& o : observations_) pnp_.add(o.p_in_world_m, o.uv_px);
-    if (pnp_.solve(rig_, config_.pnp, &estimate, inlier_.data())) {
-      // Keep the RANSAC inliers only.
-      int kept = 0;
-      for (int k = 0; k < n; ++k) {
-        if (inlier_[k]) {
-          observations_[kept] = observations_[k];
-          observation_feature_[kept] = observation_feature_[k];
-          ++kept;
-        } else {
-          cur_.map_point[observation_feature_[k]] = -1;
-        }
-      }
-      n = kept;
-    } else if (start == PoseStart::kRansacOnly) {
-      return false;
-    }  // else RANSAC failed: start from the given pose, the Huber loss and the gates must cope
-  }
-  if (!refineCameraPose(rig_, config_.refiner, observations_.data(), n, inlier_.data(), &estimate))
-    return false;
-  for (int k = 0; k < n; ++k) {
-    const int j = observation_feature_[k];
-    if (!inlier_[k]) cur_.map_point[j] = -1;
-  }
-  for (std::size_t j = 0; j < cur_.map_point.size(); ++j) {
-    if (cur_.map_point[j] < 0) cur_.match_distance[j] = std::numeric_limits<int>::max();
-  }
-  *pose = estimate;
-  cur_.tracked = estimate.inliers;
-  return true;
+  return deepnav::completeStereo(stereo_, rig_, config_.stereo, cur_left_, cur_right_, map_, pose,
+                                 &cur_);
 }
 
 bool OrbStereoOdometry::keyframeNeeded() const {
@@ -557,178 +370,39 @@ void OrbStereoOdometry::insertKeyframe() {
                                          cur_.descriptors[j], cur_.features[j].level);
   }
   kf.map_point.assign(cur_.map_point.begin(), cur_.map_point.end());
-  makeThumbnail(cur_left_, &thumbnail_scratch_, kf.thumbnail.data());
+  relocaliser_.makeThumbnailOf(cur_left_, kf.thumbnail.data());
   frames_since_keyframe_ = 0;
   keyframe_inserted_ = true;
-  if (map_.keyframeCount() >= 2) bundleAdjustLocalWindow();
-}
-
-void OrbStereoOdometry::bundleAdjustLocalWindow() {
-  const int window = std::min(config_.local_keyframes, map_.keyframeCount());
-  const int stamp = map_.nextStamp();
-  int n_points = 0;
-  int n_obs = 0;
-  const int max_entries = static_cast<int>(ba_observations_.size());
-  for (int c = 0; c < window; ++c) {
-    const int age = window - 1 - c;  // camera 0 is the oldest keyframe of the window: fixed
-    const Keyframe& kf = map_.keyframe(age);
-    ba_R_[c] = kf.R_cam_world;
-    ba_t_[c] = kf.p_world_in_cam_m;
-    for (std::size_t f = 0; f < kf.map_point.size() && n_obs < max_entries; ++f) {
-      const int m = kf.map_point[f];
-      if (m < 0) continue;
-      MapPoint& point = map_.point(m);
-      if (!point.alive) continue;
-      if (point.visit_stamp != stamp) {
-        point.visit_stamp = stamp;
-        point.ba_index = n_points;
-        ba_points_[n_points] = point.p_in_world_m;
-        ba_point_id_[n_points] = m;
-        ++n_points;
-      }
-      BaObservation& o = ba_observations_[n_obs];
-      o.camera = c;
-      o.point = point.ba_index;
-      o.uv_px = {kf.features[f].u_px, kf.features[f].v_px};
-      o.u_right_px = kf.u_right_px[f];
-      o.sigma_px = sigmaOfLevel(kf.features[f].level);
-      ba_source_age_[n_obs] = age;
-      ba_source_feature_[n_obs] = static_cast<int>(f);
-      ++n_obs;
-    }
-  }
-  BundleAdjusterSummary summary;
-  if (!bundle_adjuster_.optimise(rig_, config_.bundle, window, 1, ba_R_.data(), ba_t_.data(),
-                                 n_points, ba_points_.data(), n_obs, ba_observations_.data(),
-                                 ba_outlier_.data(), &summary)) {
-    return;
-  }
-  for (int c = 1; c < window; ++c) {
-    Keyframe& kf = map_.keyframe(window - 1 - c);
-    kf.R_cam_world = ba_R_[c];
-    kf.p_world_in_cam_m = ba_t_[c];
-  }
-  for (int j = 0; j < n_points; ++j) map_.point(ba_point_id_[j]).p_in_world_m = ba_points_[j];
-  for (int k = 0; k < n_obs; ++k) {
-    if (!ba_outlier_[k]) continue;
-    Keyframe& kf = map_.keyframe(ba_source_age_[k]);
-    const int f = ba_source_feature_[k];
-    const int m = kf.map_point[f];
-    if (m < 0) continue;
-    kf.map_point[f] = -1;
-    if (ba_source_age_[k] == 0) cur_.map_point[f] = -1;  // the newest keyframe is the current frame
-    map_.releaseReference(m);
-  }
-  const Keyframe& newest = map_.keyframe(0);
-  cur_.pose.R_cam_world = newest.R_cam_world;
-  cur_.pose.p_world_in_cam_m = newest.p_world_in_cam_m;
-}
-
-// Number of query features (every stride-th) with a ratio-test match among the keyframe's map
-// points.
-int OrbStereoOdometry::rankKeyframe(const Keyframe& kf, int stride) const {
-  int score = 0;
-  for (std::size_t j = 0; j < cur_.features.size(); j += stride) {
-    int best = std::numeric_limits<int>::max();
-    int second = std::numeric_limits<int>::max();
-    for (std::size_t f = 0; f < kf.map_point.size(); ++f) {
-      if (kf.map_point[f] < 0) continue;
-      const int d = hammingDistance(cur_.descriptors[j], kf.descriptors[f]);
-      if (d < best) {
-        second = best;
-        best = d;
-      } else if (d < second) {
-        second = d;
-      }
-    }
-    score += best <= config_.reloc_max_hamming && best < config_.reloc_ratio * second;
-  }
-  return score;
-}
-
-// Brute-force ratio-test matching of every current feature against the keyframe's map points; each
-// keyframe feature keeps its best current feature. Returns the number of associations made.
-int OrbStereoOdometry::matchKeyframe(const Keyframe& kf) {
-  clearAssociations();
-  const int nk = static_cast<int>(kf.map_point.size());
-  std::fill_n(reloc_owner_.begin(), nk, -1);
-  for (std::size_t j = 0; j < cur_.features.size(); ++j) {
-    int best = std::numeric_limits<int>::max();
-    int second = std::numeric_limits<int>::max();
-    int best_f = -1;
-    for (int f = 0; f < nk; ++f) {
-      const int m = kf.map_point[f];
-      if (m < 0 || !map_.point(m).alive) continue;
-      const int d = hammingDistance(cur_.descriptors[j], kf.descriptors[f]);
-      if (d < best) {
-        second = best;
-        best = d;
-        best_f = f;
-      } else if (d < second) {
-        second = d;
-      }
-    }
-    if (best_f < 0 || best > config_.reloc_max_hamming || best >= config_.reloc_ratio * second)
-      continue;
-    if (reloc_owner_[best_f] < 0 || best < reloc_owner_distance_[best_f]) {
-      reloc_owner_[best_f] = static_cast<int>(j);
-      reloc_owner_distance_[best_f] = best;
-    }
-  }
-  int matches = 0;
-  for (int f = 0; f < nk; ++f) {
-    const int j = reloc_owner_[f];
-    if (j < 0) continue;
-    cur_.map_point[j] = kf.map_point[f];
-    cur_.match_distance[j] = reloc_owner_distance_[f];
-    ++matches;
-  }
-  return matches;
+  if (map_.keyframeCount() >= 2) window_adjustment_.adjust(&map_, &cur_);
 }
 
 bool OrbStereoOdometry::relocalise() {
   const int n_kf = map_.keyframeCount();
   const int n = static_cast<int>(cur_.features.size());
-  if (n_kf == 0 || n < config_.reloc_min_inliers) return false;
-  grid_.build(cur_.features);
-  // Thumbnails rank every keyframe cheaply; descriptors rank the most similar few.
-  makeThumbnail(cur_left_, &thumbnail_scratch_, thumbnail_.data());
-  for (int age = 0; age < n_kf; ++age) {
-    reloc_similarity_[age] =
-        thumbnailSimilarity(thumbnail_.data(), map_.keyframe(age).thumbnail.data());
-    reloc_score_[age] = -1;
-  }
-  const int stride = std::max(1, n / config_.reloc_query_features);
-  for (int k = 0; k < std::min(config_.reloc_thumbnail_candidates, n_kf); ++k) {
-    const int age = static_cast<int>(
-        std::max_element(reloc_similarity_.begin(), reloc_similarity_.begin() + n_kf) -
-        reloc_similarity_.begin());
-    reloc_similarity_[age] = -2.0f;
-    reloc_score_[age] = rankKeyframe(map_.keyframe(age), stride);
-  }
-  for (int attempt = 0; attempt < std::min(config_.reloc_candidates, n_kf); ++attempt) {
-    const int age = static_cast<int>(
-        std::max_element(reloc_score_.begin(), reloc_score_.begin() + n_kf) - reloc_score_.begin());
-    if (reloc_score_[age] * stride < config_.reloc_min_inliers / 2) break;
-    reloc_score_[age] = -1;
+  if (n_kf == 0 || n < config_.reloc.min_inliers) return false;
+  search_.index(cur_);
+  const int stride = relocaliser_.rank(cur_left_, cur_, map_);
+  for (int attempt = 0; attempt < std::min(config_.reloc.candidates, n_kf); ++attempt) {
+    const int age = relocaliser_.nextCandidate(n_kf, stride);
+    if (age < 0) break;
     const Keyframe& kf = map_.keyframe(age);
-    if (matchKeyframe(kf) < config_.reloc_min_inliers) continue;
+    if (relocaliser_.matchKeyframe(kf, map_, &cur_) < config_.reloc.min_inliers) continue;
     CameraPoseEstimate pose;
     pose.R_cam_world = kf.R_cam_world;
     pose.p_world_in_cam_m = kf.p_world_in_cam_m;
     // RANSAC must succeed here: there is no motion prior to fall back on.
-    if (!estimatePose(PoseStart::kRansacOnly, &pose)) continue;
-    anchor_keyframe_id_ = kf.id;
-    anchor_until_keyframe_id_ = map_.keyframe(0).id + config_.local_keyframes;
-    searchLocalMap(pose);
+    if (!estimatePose(Start::kRansacOnly, &pose)) continue;
+    search_.anchorAt(kf.id, map_.keyframe(0).id + config_.local_keyframes);
+    search_.searchLocalMap(pose, &map_, &cur_);
     completeStereo(pose);
-    if (!estimatePose(PoseStart::kGiven, &pose) || cur_.tracked < config_.reloc_min_inliers)
+    if (!estimatePose(Start::kGiven, &pose) ||
+        cur_.tracked < config_.reloc.min_inliers)
       continue;
     cur_.pose = pose;
     return true;
   }
-  anchor_keyframe_id_ = -1;
-  clearAssociations();
+  search_.clearAnchor();
+  cur_.clearAssociations();
   return false;
 }
 

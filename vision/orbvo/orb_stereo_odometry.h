@@ -6,13 +6,14 @@
 #include <string>
 #include <vector>
 
-#include "vision/orbvo/feature_grid.h"
+#include "vision/orbvo/frame_pose_estimator.h"
 #include "vision/orbvo/grid_orb_extractor.h"
-#include "vision/orbvo/local_bundle_adjuster.h"
+#include "vision/orbvo/keyframe_relocaliser.h"
+#include "vision/orbvo/local_window_adjustment.h"
+#include "vision/orbvo/map_point_search.h"
+#include "vision/orbvo/orb_frame.h"
 #include "vision/orbvo/orb_vo_config.h"
 #include "vision/orbvo/orb_vo_output.h"
-#include "vision/orbvo/pnp_ransac.h"
-#include "vision/orbvo/pose_refiner.h"
 #include "vision/orbvo/stereo_feature_matcher.h"
 #include "vision/orbvo/stereo_rig.h"
 #include "vision/orbvo/vo_map.h"
@@ -62,23 +63,7 @@ class OrbStereoOdometry {
     prior_next_T_odom_cam_ = T_odom_cam;
   }
 
-  const VoMap& map() const { return map_; }
-  const OrbVoConfig& config() const { return config_; }
-
  private:
-  struct FrameState {
-    TimeUs t_us = 0;
-    std::vector<OrbFeature> features;
-    std::vector<OrbDescriptor> descriptors;
-    std::vector<float> u_right_px;
-    std::vector<Eigen::Vector3d> p_in_cam_m;
-    std::vector<int> map_point;           // per feature, -1 none
-    std::vector<int> match_distance;      // per feature, Hamming distance of its map point match
-    std::vector<std::uint8_t> available;  // per feature: may still take a map point
-    CameraPoseEstimate pose;
-    int tracked = 0;
-    int stereo_points = 0;
-  };
   struct TrackedPose {
     TimeUs t_us = 0;
     CameraPoseEstimate pose;
@@ -86,69 +71,38 @@ class OrbStereoOdometry {
     Eigen::Isometry3d T_odom_cam_prior = Eigen::Isometry3d::Identity();
   };
 
-  void reserveFrame(FrameState* frame, int capacity) const;
   bool detect(TimeUs t_us, const cv::Mat& left, const cv::Mat& right);
   bool startMap(OrbVoOutput* out);
+  void rememberTracked();
   bool trackFrame();
   bool relocalise();
   bool reselectWithPrior();
-  int searchPreviousFrame(const CameraPoseEstimate& predicted, double radius_px);
-  int searchLocalMap(const CameraPoseEstimate& pose);
   int completeStereo(const CameraPoseEstimate& pose);
-  void searchKeyframePoints(const Keyframe& kf, const CameraPoseEstimate& pose, int stamp);
-  enum class PoseStart { kGiven, kRansacOrGiven, kRansacOnly };
-  bool estimatePose(PoseStart start, CameraPoseEstimate* pose);
-  int rankKeyframe(const Keyframe& kf, int stride) const;
-  int matchKeyframe(const Keyframe& kf);
-  void clearAssociations();
+  bool estimatePose(FramePoseEstimator::Start start, CameraPoseEstimate* pose) {
+    return pose_estimator_.estimate(start, map_, &cur_, pose);
+  }
   bool keyframeNeeded() const;
   void insertKeyframe();
-  void bundleAdjustLocalWindow();
   void fillOutput(OrbVoOutput* out) const;
-  double sigmaOfLevel(int level) const { return level_sigma_px_[level]; }
 
   bool ready_ = false;
   OrbVoConfig config_{};
   StereoRig rig_{};
-  int capacity_ = 0;
   GridOrbExtractor extractor_;        // left image
   GridOrbExtractor right_extractor_;  // right image (its own FAST thresholds and a larger budget)
   StereoFeatureMatcher stereo_;
-  FeatureGrid grid_;
-  PnpRansac pnp_;
-  LocalBundleAdjuster bundle_adjuster_;
+  MapPointSearch search_;
+  FramePoseEstimator pose_estimator_;
+  LocalWindowAdjustment window_adjustment_;
+  KeyframeRelocaliser relocaliser_;
   VoMap map_;
 
   cv::Mat grey_left_, grey_right_;  // BGR input converted
   cv::Mat cur_left_, cur_right_;    // headers of this frame's grey images
   std::vector<OrbFeature> right_features_;
   std::vector<OrbDescriptor> right_descriptors_;
-  FrameState cur_, prev_;
-  std::vector<double> level_scale_;
-  std::vector<double> level_sigma_px_;
-
-  // Pose estimation scratch.
-  std::vector<PoseObservation> observations_;
-  std::vector<int> observation_feature_;
-  std::vector<std::uint8_t> inlier_;
-
-  // Bundle adjustment scratch.
-  std::vector<Eigen::Matrix3d> ba_R_;
-  std::vector<Eigen::Vector3d> ba_t_;
-  std::vector<Eigen::Vector3d> ba_points_;
-  std::vector<int> ba_point_id_;
-  std::vector<BaObservation> ba_observations_;
-  std::vector<int> ba_source_age_;
-  std::vector<int> ba_source_feature_;
-  std::vector<std::uint8_t> ba_outlier_;
-
-  // Relocalisation scratch.
-  cv::Mat thumbnail_scratch_;
-  std::vector<float> thumbnail_;         // this frame's, when needed
-  std::vector<float> reloc_similarity_;  // per keyframe age
-  std::vector<int> reloc_score_;         // per keyframe age
-  std::vector<int> reloc_owner_;         // per keyframe feature: best current feature
-  std::vector<int> reloc_owner_distance_;
+  OrbFrame cur_, prev_;
+  std::vector<double> level_sigma_px_;  // per pyramid level, the corner noise
 
   // Tracking state.
   bool initialised_ = false;
@@ -167,8 +121,6 @@ class OrbStereoOdometry {
   bool prior_reselected_ = false;
   std::vector<int> saved_map_point_;  // associations before a re-selection (restored if it fails)
   std::vector<int> saved_match_distance_;
-  int anchor_keyframe_id_ = -1;  // keyframe found by the last relocalisation, kept in the local map
-  int anchor_until_keyframe_id_ = -1;
 };
 
 }  // namespace deepnav

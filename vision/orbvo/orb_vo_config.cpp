@@ -22,14 +22,14 @@ const char* OrbVoConfig::validate() const {
     return "pnp: iterations >= 1, reprojection_px > 0, confidence in (0, 1)";
   }
   if (min_init_points < 10) return "min_init_points: must be >= 10";
-  if (reloc_query_features < 10 || reloc_candidates < 1 ||
-      reloc_min_inliers < refiner.min_inliers) {
-    return "reloc_*: query_features >= 10, candidates >= 1, min_inliers >= refiner.min_inliers";
+  if (reloc.query_features < 10 || reloc.candidates < 1 ||
+      reloc.min_inliers < refiner.min_inliers) {
+    return "reloc: query_features >= 10, candidates >= 1, min_inliers >= refiner.min_inliers";
   }
-  if (reloc_thumbnail_candidates < reloc_candidates) {
-    return "reloc_thumbnail_candidates: must be >= reloc_candidates";
+  if (reloc.thumbnail_candidates < reloc.candidates) {
+    return "reloc.thumbnail_candidates: must be >= reloc.candidates";
   }
-  if (reloc_ratio <= 0.0 || reloc_ratio > 1.0) return "reloc_ratio: in (0, 1]";
+  if (reloc.ratio <= 0.0 || reloc.ratio > 1.0) return "reloc.ratio: in (0, 1]";
   if (reset_after_lost_frames < 0) return "reset_after_lost_frames: must be >= 0";
   if (motion_prior.translation_sigma_m <= 0.0 || motion_prior.rotation_sigma_deg <= 0.0 ||
       motion_prior.consistency_chi2 <= 0.0 || motion_prior.gate_chi2 <= 0.0) {

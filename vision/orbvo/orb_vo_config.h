@@ -3,6 +3,7 @@
 #include "vision/orbvo/motion_prior.h"
 #include "vision/orbvo/grid_orb_extractor.h"
 #include "vision/orbvo/keyframe_policy.h"
+#include "vision/orbvo/keyframe_relocaliser.h"
 #include "vision/orbvo/local_bundle_adjuster.h"
 #include "vision/orbvo/pnp_ransac.h"
 #include "vision/orbvo/pose_refiner.h"
@@ -43,14 +44,7 @@ struct OrbVoConfig {
   int max_map_points = 20000;  // map point pool, >= 100
   int min_init_points = 50;    // stereo points needed to start a map
 
-  // Relocalisation when lost: every stored keyframe ranked by thumbnail similarity, the best
-  // reloc_thumbnail_candidates by descriptor matches, the best reloc_candidates tried with PnP.
-  int reloc_thumbnail_candidates = 8;  // >= reloc_candidates
-  int reloc_query_features = 200;      // features of the lost frame used to rank keyframes
-  int reloc_candidates = 3;            // best-ranked keyframes tried with PnP, >= 1
-  int reloc_max_hamming = 64;          // bits of 256
-  double reloc_ratio = 0.8;            // ratio test of the descriptor matching
-  int reloc_min_inliers = 25;          // tracked points needed to accept a relocalisation
+  RelocalisationConfig reloc;
   // Consecutive lost frames after which a new map starts; 0: never
   int reset_after_lost_frames = 0;
   // The navigation's predicted motion as the arbiter of the inliers (motion_prior.h); off by default.
