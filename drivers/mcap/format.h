@@ -29,6 +29,13 @@ enum class Opcode : uint8_t {
 
 // Every record starts with a 1-byte opcode and a uint64 content length.
 inline constexpr size_t kRecordPrefixSize = 1 + 8;
+
+// The little-endian uint64 at p (a record prefix's length field: p = prefix + 1).
+inline uint64_t le64(const uint8_t* p) {
+  uint64_t v = 0;
+  for (int i = 7; i >= 0; --i) v = (v << 8) | p[i];
+  return v;
+}
 // Footer content: summary_start (8) + summary_offset_start (8) + summary_crc (4).
 inline constexpr size_t kFooterContentSize = 8 + 8 + 4;
 inline constexpr size_t kFooterRecordSize = kRecordPrefixSize + kFooterContentSize;

@@ -71,15 +71,24 @@ class Reader {
   bool fail(const std::string& what, uint64_t offset);
   void warn(const std::string& what, uint64_t offset);
 
-  // open()
+  // Opening (reader.cpp).
   bool readMagicAndHeader();
   bool readFooter(Footer* footer);
+  bool readContent(uint64_t offset, uint64_t length, std::vector<uint8_t>* out);
+  bool definitionRecord(uint8_t opcode, const uint8_t* content, size_t size, uint64_t offset);
+
+  // The summary (reader_summary.cpp).
   bool loadSummary(const Footer& footer);
   bool parseSummary(const uint8_t* data, size_t size, uint64_t base,
                     std::vector<MetadataIndex>* metadata_indexes);
   bool chunkInfoInBounds(const ChunkInfo& chunk) const;
   bool loadIndexedMetadata(const std::vector<MetadataIndex>& indexes);
   void discardSummary();
+
+  // The record-by-record walk of the data section, shared by the open() scan and readAll(), and
+  // the scan that indexes a file without a summary (reader_scan.cpp).
+  bool walkDataSection(const RecordVisitor& visit);
+  bool cutOff(uint64_t offset, const std::string& why);
   bool scanDataSection();
   Visit scanRecord(uint64_t offset, uint8_t opcode, uint64_t length);
   bool scanChunk(uint64_t offset, uint64_t length);
@@ -89,22 +98,20 @@ class Reader {
   void rebuildStatistics();
   void describeCut();
 
-  // Record-by-record walk of the data section, shared by the open() scan and readAll().
-  bool walkDataSection(const RecordVisitor& visit);
-  bool cutOff(uint64_t offset, const std::string& why);
-  bool readContent(uint64_t offset, uint64_t length, std::vector<uint8_t>* out);
-  bool definitionRecord(uint8_t opcode, const uint8_t* content, size_t size, uint64_t offset);
-
-  // readAll() / readAllInLogTimeOrder()
-  Visit readAllRecord(uint64_t offset, uint8_t opcode, uint64_t length,
-                      const MessageCallback& callback);
-  void checkDataCrc(const uint8_t* content, size_t size, uint64_t offset);
+  // A chunk's records: decompressed, checked, walked (reader_chunk.cpp).
   Unpack unpackChunk(const uint8_t* content, size_t size, uint64_t offset, const uint8_t** records,
                      size_t* records_size);
   bool forEachChunkRecord(const uint8_t* records, size_t size, uint64_t chunk_offset,
                           const ChunkRecordVisitor& visit);
+
+  // readAll() (reader_file_order.cpp).
+  Visit readAllRecord(uint64_t offset, uint8_t opcode, uint64_t length,
+                      const MessageCallback& callback);
+  void checkDataCrc(const uint8_t* content, size_t size, uint64_t offset);
   bool deliverChunk(const uint8_t* content, size_t size, uint64_t offset,
                     const MessageCallback& callback);
+
+  // readAllInLogTimeOrder() (reader_log_time_order.cpp).
   struct LogTimeMerge;
   bool loadChunkAt(const ChunkInfo& chunk, std::vector<uint8_t>* records);
   bool mergeChunk(const ChunkInfo& chunk, LogTimeMerge* merge);

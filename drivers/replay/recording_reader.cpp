@@ -6,25 +6,9 @@
 namespace deepnav {
 
 bool RecordingReader::open(const std::string& path, std::string* error) {
-  if (!reader_.open(path, error)) return false;
-  topic_of_channel_.clear();
-  counts_.fill(0);
-  for (const auto& [id, channel] : reader_.channels()) {
-    const Topic topic = topicByName(channel.topic);
-    topic_of_channel_[id] = topic;
-    if (topic == Topic::kCount) continue;
-    const auto it = reader_.statistics().channel_message_counts.find(id);
-    if (it != reader_.statistics().channel_message_counts.end()) counts_[static_cast<std::size_t>(topic)] += it->second;
-  }
+  if (!recording_.open(path, error)) return false;
   stats_ = ReplayReadStats{};
   return true;
-}
-
-const std::map<std::string, std::string>* RecordingReader::metadata(const std::string& name) const {
-  for (const auto& m : reader_.metadata()) {
-    if (m.name == name) return &m.metadata;
-  }
-  return nullptr;
 }
 
 bool RecordingReader::forEach(bool log_time_order, const Callback& callback, std::string* error) {
@@ -32,15 +16,15 @@ bool RecordingReader::forEach(bool log_time_order, const Callback& callback, std
   auto visit = [&](const mcap::MessageView& m) {
     if (!stopped && !handle(m, callback)) stopped = true;
   };
-  const bool ok = log_time_order ? reader_.readAllInLogTimeOrder(visit) : reader_.readAll(visit);
-  if (!ok && error) *error = reader_.error();
+  mcap::Reader& reader = recording_.reader();
+  const bool ok = log_time_order ? reader.readAllInLogTimeOrder(visit) : reader.readAll(visit);
+  if (!ok && error) *error = reader.error();
   return ok;
 }
 
 bool RecordingReader::handle(const mcap::MessageView& m, const Callback& callback) {
   ++stats_.messages;
-  const auto it = topic_of_channel_.find(m.channel_id);
-  const Topic topic = it == topic_of_channel_.end() ? Topic::kCount : it->second;
+  const Topic topic = recording_.topicOf(m.channel_id);
   ReplayEvent e;
   switch (topic) {
     case Topic::kImu:

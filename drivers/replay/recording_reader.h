@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "drivers/mcap/reader.h"
+#include "drivers/replay/recorded_topics.h"
 #include "drivers/replay/replay_event_source.h"
 #include "drivers/recording/frame_truth.h"
 #include "drivers/recording/topics.h"
@@ -27,7 +28,7 @@ class RecordingReader : public ReplayEventSource {
   // True when the recording holds the loop's own outputs (a recording of a run, not a raw sensor log).
   bool hasSolutions() const override { return count(Topic::kNavSolution) > 0; }
   bool hasTruth() const { return count(Topic::kTruth) > 0; }
-  std::uint64_t count(Topic topic) const { return counts_[static_cast<std::size_t>(topic)]; }
+  std::uint64_t count(Topic topic) const { return recording_.count(topic); }
 
   // File order = the order the loop consumed and produced; log-time order = sensor time order.
   bool forEach(bool log_time_order, const Callback& callback, std::string* error) override;
@@ -36,18 +37,20 @@ class RecordingReader : public ReplayEventSource {
   // the loop never sees it; evaluation, e.g. the replay's VO consistency, asks for it).
   void setDeliverFrameTruth(bool deliver) { deliver_frame_truth_ = deliver; }
 
-  const std::map<std::string, std::string>* metadata(const std::string& name) const override;
-  bool truncated() const override { return reader_.truncated(); }
-  const std::vector<std::string>& warnings() const override { return reader_.warnings(); }
+  const std::map<std::string, std::string>* metadata(const std::string& name) const override {
+    return recording_.metadata(name);
+  }
+  bool truncated() const override { return recording_.reader().truncated(); }
+  const std::vector<std::string>& warnings() const override {
+    return recording_.reader().warnings();
+  }
   const ReplayReadStats& stats() const override { return stats_; }
 
  private:
   bool handle(const mcap::MessageView& m, const Callback& callback);
   bool handleImage(Topic topic, const mcap::MessageView& m, const Callback& callback);
 
-  mcap::Reader reader_;
-  std::map<std::uint16_t, Topic> topic_of_channel_;
-  std::array<std::uint64_t, kTopicCount> counts_{};
+  RecordedTopics recording_;
   ReplayReadStats stats_;
   StereoFrame frame_;
   bool frame_has_info_ = false;

@@ -6,28 +6,12 @@
 namespace deepnav {
 
 bool TruthFrameReader::open(const std::string& path, std::string* error) {
-  if (!reader_.open(path, error)) return false;
-  topic_of_channel_.clear();
-  counts_.fill(0);
-  for (const auto& [id, channel] : reader_.channels()) {
-    const Topic topic = topicByName(channel.topic);
-    topic_of_channel_[id] = topic;
-    if (topic == Topic::kCount) continue;
-    const auto it = reader_.statistics().channel_message_counts.find(id);
-    if (it != reader_.statistics().channel_message_counts.end()) counts_[static_cast<std::size_t>(topic)] += it->second;
-  }
+  if (!recording_.open(path, error)) return false;
   if (count(Topic::kFrameTruth) == 0) {
     if (error) *error = path + ": no per-frame ground truth (/truth/frame); record it with deepnav-sim";
     return false;
   }
   return true;
-}
-
-const std::map<std::string, std::string>* TruthFrameReader::metadata(const std::string& name) const {
-  for (const auto& m : reader_.metadata()) {
-    if (m.name == name) return &m.metadata;
-  }
-  return nullptr;
 }
 
 bool TruthFrameReader::forEach(const Callback& callback, std::string* error) {
@@ -36,19 +20,18 @@ bool TruthFrameReader::forEach(const Callback& callback, std::string* error) {
   stopped_ = false;
   has_info_ = has_left_ = pair_done_ = false;
   truth_has_frame_ = truth_has_depth_ = truth_has_disparity_ = false;
-  const bool ok = reader_.readAll([this](const mcap::MessageView& m) {
+  const bool ok = recording_.reader().readAll([this](const mcap::MessageView& m) {
     if (!stopped_) handle(m);
   });
   callback_ = nullptr;
-  if (!ok && error) *error = reader_.error();
+  if (!ok && error) *error = recording_.reader().error();
   return ok;
 }
 
 void TruthFrameReader::handle(const mcap::MessageView& m) {
-  const auto it = topic_of_channel_.find(m.channel_id);
-  if (it == topic_of_channel_.end()) return;
+  const Topic topic = recording_.topicOf(m.channel_id);
   TimeUs t_us = 0;
-  switch (it->second) {
+  switch (topic) {
     case Topic::kStereoInfo:
       if (pair_done_ || has_info_) ++stats_.unmatched;
       has_info_ = decodeStereoInfo(m.data, m.size, &pair_);
@@ -57,7 +40,7 @@ void TruthFrameReader::handle(const mcap::MessageView& m) {
       return;
     case Topic::kLeftImage:
     case Topic::kRightImage:
-      handleImage(it->second == Topic::kLeftImage, m);
+      handleImage(topic == Topic::kLeftImage, m);
       return;
     case Topic::kFrameTruth:
       if (truth_has_frame_) ++stats_.unmatched;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "drivers/mcap/reader.h"
+#include "drivers/replay/recorded_topics.h"
 #include "drivers/recording/frame_truth.h"
 #include "drivers/recording/topics.h"
 #include "vision/types/stereo_frame.h"
@@ -31,10 +32,12 @@ class TruthFrameReader {
   using Callback = std::function<bool(const StereoFrame* pair, const FrameTruth& truth)>;  // false: stop
 
   bool open(const std::string& path, std::string* error);
-  std::uint64_t count(Topic topic) const { return counts_[static_cast<std::size_t>(topic)]; }
+  std::uint64_t count(Topic topic) const { return recording_.count(topic); }
   bool hasMaps() const { return count(Topic::kTruthDepth) > 0 && count(Topic::kTruthDisparity) > 0; }
   bool hasImages() const { return count(Topic::kLeftImage) > 0 && count(Topic::kRightImage) > 0; }
-  const std::map<std::string, std::string>* metadata(const std::string& name) const;
+  const std::map<std::string, std::string>* metadata(const std::string& name) const {
+    return recording_.metadata(name);
+  }
 
   // In file order (the simulator writes each pair, then its truth, all stamped with the capture time).
   bool forEach(const Callback& callback, std::string* error);
@@ -45,9 +48,7 @@ class TruthFrameReader {
   void handleImage(bool left, const mcap::MessageView& m);
   void deliverIfMatched();
 
-  mcap::Reader reader_;
-  std::map<std::uint16_t, Topic> topic_of_channel_;
-  std::array<std::uint64_t, kTopicCount> counts_{};
+  RecordedTopics recording_;
   TruthFrameReadStats stats_;
   const Callback* callback_ = nullptr;
   bool stopped_ = false;
