@@ -34,6 +34,7 @@ class DisparityEdgeRefiner {
  private:
   void markJumps(const cv::Mat& disparity_px, float jump_px);
   void dilateJumps(int radius_px);
+  void dilateColumns(const std::uint8_t* in, std::uint8_t* out, int radius_px);
   template <int kChannels>
   void refineBand(const cv::Mat& guide, int radius_px, cv::Mat* disparity_px);
   template <int kChannels>
@@ -46,6 +47,7 @@ class DisparityEdgeRefiner {
   std::vector<std::uint8_t> jump_;  // 1 where a 4-neighbour differs by more than the jump
   std::vector<std::uint8_t> band_;  // jump_ dilated by band_px (rows, then columns)
   std::vector<std::uint8_t> rows_;  // scratch of the separable dilation
+  std::vector<std::int32_t> column_count_;  // per column: flags within the dilation window
   std::vector<std::uint16_t> bin_;  // integer disparity of each pixel, kNoBin when invalid
   std::vector<float> weight_lut_;   // exp(-diff / sigma), diff = 0 .. 765
   std::vector<float> weight_by_grey_diff_;  // weight_lut_[3 |g|], g = grey difference -255 .. 255, at g + 255

@@ -66,27 +66,7 @@ void ElasDenseMatcher::match(const ElasDescriptorImage& ref, const ElasDescripto
   }
 }
 
-// The row is walked cell by cell of the candidate grid (no division per pixel).
-void ElasDenseMatcher::matchRow(const ElasDescriptorImage& ref, const ElasDescriptorImage& other,
-                                bool view_right, const cv::Mat& mean_px,
-                                const ElasCandidates& candidates, int v, float* out,
-                                float* subpixel) const {
-  const int width = ref.width();
-  const int grid = candidates.gridSize();
-  const float* mean_row = mean_px.ptr<float>(v);
-  const std::uint8_t* ref_row = ref.at(0, v);
-  const std::uint8_t* other_row = other.at(0, v);
-  for (int u0 = 0; u0 < width; u0 += grid) {
-    const std::uint64_t* cell = candidates.cellMask(u0, v);
-    const int u1 = std::min(width, u0 + grid);
-    for (int u = u0; u < u1; ++u) {
-      out[u] = matchPixel(ref_row, other_row, view_right, width, mean_row[u], cell, candidates.words(), u,
-                          subpixel);
-    }
-  }
-}
-
-float ElasDenseMatcher::matchPixel(const std::uint8_t* ref_row, const std::uint8_t* other_row, bool view_right,
+inline float ElasDenseMatcher::matchPixel(const std::uint8_t* ref_row, const std::uint8_t* other_row, bool view_right,
                                    int width, float mu, const std::uint64_t* cell, int words, int u,
                                    float* subpixel) const {
   constexpr std::ptrdiff_t kBytes = ElasDescriptorImage::kBytes;
@@ -140,6 +120,26 @@ float ElasDenseMatcher::matchPixel(const std::uint8_t* ref_row, const std::uint8
     }
   }
   return static_cast<float>(best_d);
+}
+
+// The row is walked cell by cell of the candidate grid (no division per pixel).
+void ElasDenseMatcher::matchRow(const ElasDescriptorImage& ref, const ElasDescriptorImage& other,
+                                bool view_right, const cv::Mat& mean_px,
+                                const ElasCandidates& candidates, int v, float* out,
+                                float* subpixel) const {
+  const int width = ref.width();
+  const int grid = candidates.gridSize();
+  const float* mean_row = mean_px.ptr<float>(v);
+  const std::uint8_t* ref_row = ref.at(0, v);
+  const std::uint8_t* other_row = other.at(0, v);
+  for (int u0 = 0; u0 < width; u0 += grid) {
+    const std::uint64_t* cell = candidates.cellMask(u0, v);
+    const int u1 = std::min(width, u0 + grid);
+    for (int u = u0; u < u1; ++u) {
+      out[u] = matchPixel(ref_row, other_row, view_right, width, mean_row[u], cell, candidates.words(), u,
+                          subpixel);
+    }
+  }
 }
 
 }  // namespace deepnav
