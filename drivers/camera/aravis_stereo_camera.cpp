@@ -276,15 +276,7 @@ bool AravisStereoCamera::startSide(Side& s, std::string* error) {
 }
 
 bool AravisStereoCamera::start(FramePool* pool, SpscRing<int>* frames, std::string* error) {
-  if (pool == nullptr || frames == nullptr || pool->size() == 0) {
-    if (error) *error = "camera: no frame pool";
-    return false;
-  }
-  const StereoFrame& f = pool->frame(0);
-  if (f.left.cols != config_.width_px || f.left.rows != config_.height_px || f.left.channels() != config_.channels) {
-    if (error) *error = "camera: the frame pool's frames do not have the camera's size and channels";
-    return false;
-  }
+  if (!checkFramePool(config_, pool, frames, error)) return false;
   if (sides_[0].camera == nullptr || sides_[1].camera == nullptr) {
     if (error) *error = "camera: start() before a successful open()";
     return false;

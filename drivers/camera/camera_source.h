@@ -28,6 +28,11 @@ class CameraSource {
 // unknown name.
 std::unique_ptr<CameraSource> makeCameraSource(const CameraSourceConfig& config, std::string* error);
 
+// The check of every driver's start(): a pool whose frames have the configured size and channel count,
+// and a ring.
+bool checkFramePool(const CameraSourceConfig& config, const FramePool* pool, const SpscRing<int>* frames,
+                    std::string* error);
+
 // Checks what every driver needs from the config (formats, tolerance against the frame period...).
 bool validateCameraSourceConfig(const CameraSourceConfig& config, std::string* error);
 

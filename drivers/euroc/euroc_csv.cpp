@@ -28,11 +28,6 @@ bool parseTimestampNs(const std::string& text, std::int64_t* t_ns) {
   return r.ec == std::errc() && r.ptr == end && *t_ns >= 0;
 }
 
-bool fail(const std::string& path, int line, const std::string& what, std::string* error) {
-  if (error) *error = path + ":" + std::to_string(line) + ": " + what;
-  return false;
-}
-
 }  // namespace
 
 bool readEurocCsv(const std::string& path, int columns, std::vector<EurocCsvRow>* rows, std::string* error) {
@@ -50,15 +45,15 @@ bool readEurocCsv(const std::string& path, int columns, std::vector<EurocCsvRow>
     if (t.empty() || t[0] == '#') continue;
     std::vector<std::string> fields = splitCommas(t);
     if (static_cast<int>(fields.size()) != columns) {
-      return fail(path, line, std::to_string(fields.size()) + " columns, expected " + std::to_string(columns), error);
+      return failAtLine(path, line, std::to_string(fields.size()) + " columns, expected " + std::to_string(columns), error);
     }
     EurocCsvRow row;
     row.line = line;
     if (!parseTimestampNs(fields[0], &row.t_ns)) {
-      return fail(path, line, "timestamp '" + fields[0] + "' is not a non-negative integer (ns)", error);
+      return failAtLine(path, line, "timestamp '" + fields[0] + "' is not a non-negative integer (ns)", error);
     }
     if (!rows->empty() && row.t_ns <= rows->back().t_ns) {
-      return fail(path, line, "timestamp " + fields[0] + " ns is not after the previous row's (line " +
+      return failAtLine(path, line, "timestamp " + fields[0] + " ns is not after the previous row's (line " +
                                   std::to_string(rows->back().line) + "): timestamps must increase",
                   error);
     }
@@ -75,7 +70,7 @@ bool eurocCsvNumbers(const std::string& path, const EurocCsvRow& row, std::vecto
     char* end = nullptr;
     const double v = std::strtod(f.c_str(), &end);
     if (f.empty() || end != f.c_str() + f.size() || !std::isfinite(v)) {
-      return fail(path, row.line, "column " + std::to_string(i + 2) + " '" + f + "' is not a finite number", error);
+      return failAtLine(path, row.line, "column " + std::to_string(i + 2) + " '" + f + "' is not a finite number", error);
     }
     (*out)[i] = v;
   }

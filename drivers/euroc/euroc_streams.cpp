@@ -4,17 +4,13 @@
 #include <filesystem>
 
 #include "drivers/euroc/euroc_csv.h"
+#include "drivers/euroc/euroc_text.h"
 
 namespace deepnav {
 namespace {
 
 // Ground-truth quaternions are written with ~15 digits; a norm off by more than this is a damaged row.
 constexpr double kUnitQuaternionTolerance = 1e-3;
-
-bool fail(const std::string& path, int line, const std::string& what, std::string* error) {
-  if (error) *error = path + ":" + std::to_string(line) + ": " + what;
-  return false;
-}
 
 }  // namespace
 
@@ -34,7 +30,7 @@ bool readEurocImageList(const std::string& camera_dir, std::vector<EurocImageEnt
         ++*skipped_missing;
         continue;
       }
-      return fail(csv, r.line, "image file " + file.string() + " is missing", error);
+      return failAtLine(csv, r.line, "image file " + file.string() + " is missing", error);
     }
     images->push_back(EurocImageEntry{r.t_ns, file.string(), r.line});
   }
@@ -67,7 +63,7 @@ bool readEurocTruth(const std::string& csv_path, std::vector<EurocTruthRow>* out
     t.p_body_in_world_m = Eigen::Vector3d(v[0], v[1], v[2]);
     t.q_world_body = Eigen::Quaterniond(v[3], v[4], v[5], v[6]);  // q_RS_w, x, y, z
     if (std::abs(t.q_world_body.norm() - 1.0) > kUnitQuaternionTolerance) {
-      return fail(csv_path, r.line, "quaternion q_RS (columns 5-8) is not unit length", error);
+      return failAtLine(csv_path, r.line, "quaternion q_RS (columns 5-8) is not unit length", error);
     }
     t.q_world_body.normalize();
     t.v_body_in_world_mps = Eigen::Vector3d(v[7], v[8], v[9]);

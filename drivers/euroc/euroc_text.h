@@ -12,4 +12,10 @@ inline std::string trimEurocBlanks(const std::string& s) {
   return s.substr(b, e - b + 1);
 }
 
+// "path:line: what" into *error (when given); returns false. The readers' error for a bad line.
+inline bool failAtLine(const std::string& path, int line, const std::string& what, std::string* error) {
+  if (error) *error = path + ":" + std::to_string(line) + ": " + what;
+  return false;
+}
+
 }  // namespace deepnav

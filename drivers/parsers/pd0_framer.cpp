@@ -10,37 +10,17 @@ namespace deepnav {
 bool Pd0Framer::init(size_t max_ensemble_bytes) {
   if (max_ensemble_bytes < kMinEnsembleBytes || max_ensemble_bytes > 65535) return false;
   max_bytes_ = max_ensemble_bytes;
-  pending_ = 0;
-  probe_ = 0;
-  end_of_input_ = false;
-  wait_for_certainty_ = false;
-  in_lock_ = false;
-  last_frame_bytes_ = 0;
-  return buffer_.init(max_ensemble_bytes + 2 + 4096);
-}
-
-void Pd0Framer::flushPending() {
-  if (pending_ > 0) probe_ = 0;
-  buffer_.consume(pending_);
-  pending_ = 0;
-}
-
-FrameStatus Pd0Framer::skip(size_t n, const char* reason, FrameError* error) {
-  *error = {buffer_.offset(), n, reason};
-  buffer_.consume(n);
-  probe_ = 0;
-  in_lock_ = false;
-  return FrameStatus::kBad;
+  return core_.init(max_ensemble_bytes + 2 + 4096);
 }
 
 bool Pd0Framer::headerAt(size_t at) const {
-  const uint8_t* d = buffer_.data();
-  return at + 1 < buffer_.size() && d[at] == 0x7F && d[at + 1] == 0x7F;
+  const uint8_t* d = core_.buffer.data();
+  return at + 1 < core_.buffer.size() && d[at] == 0x7F && d[at + 1] == 0x7F;
 }
 
 Pd0Framer::Check Pd0Framer::checkAt(size_t at, size_t* frame_bytes, const char** reason, bool check_offsets) const {
-  const uint8_t* d = buffer_.data() + at;
-  const size_t avail = buffer_.size() - at;
+  const uint8_t* d = core_.buffer.data() + at;
+  const size_t avail = core_.buffer.size() - at;
   if (avail < 6) return Check::kIncomplete;
   const size_t length = readLe16(d + 2);
   const size_t num_types = d[5];
@@ -73,7 +53,7 @@ Pd0Framer::Check Pd0Framer::checkAt(size_t at, size_t* frame_bytes, const char**
 
 size_t Pd0Framer::laterValidFrame() {
   return deepnav::laterValidFrame(
-      buffer_.data(), buffer_.size(), 0x7F, &probe_, [this](size_t at) { return headerAt(at); },
+      core_.buffer.data(), core_.buffer.size(), 0x7F, &core_.probe, [this](size_t at) { return headerAt(at); },
       [this](size_t at, size_t* bytes) {
         const char* why = "";
         return checkAt(at, bytes, &why);
@@ -88,7 +68,7 @@ size_t Pd0Framer::laterValidFrame() {
 // so the steady state of a live line never waits (a file, waitForCertainty(), always waits). The scan is a memchr over the frame: a few percent of its cost.
 Pd0Framer::Overrun Pd0Framer::overrunByLaterFrame(size_t frame_bytes) const {
   return deepnav::overrunByLaterFrame(
-      buffer_.data(), buffer_.size(), frame_bytes, 0x7F, end_of_input_, [this](size_t at) { return headerAt(at); },
+      core_.buffer.data(), core_.buffer.size(), frame_bytes, 0x7F, core_.end_of_input, [this](size_t at) { return headerAt(at); },
       [this](size_t at, size_t* bytes) {
         const char* why = "";
         return checkAt(at, bytes, &why);
@@ -96,44 +76,40 @@ Pd0Framer::Overrun Pd0Framer::overrunByLaterFrame(size_t frame_bytes) const {
 }
 
 FrameStatus Pd0Framer::next(RawFrame* frame, FrameError* error) {
-  flushPending();
-  const uint8_t* d = buffer_.data();
-  const size_t size = buffer_.size();
+  core_.flushPending();
+  const uint8_t* d = core_.buffer.data();
+  const size_t size = core_.buffer.size();
   size_t start = 0;
   while (start + 1 < size && !(d[start] == 0x7F && d[start + 1] == 0x7F)) ++start;
   if (start > 0) {
     // Keep a trailing 0x7F: it may be the first half of the next header.
-    const bool half_header = start + 1 == size && d[start] == 0x7F && !end_of_input_;
+    const bool half_header = start + 1 == size && d[start] == 0x7F && !core_.end_of_input;
     const size_t drop = half_header ? start : (start + 1 < size ? start : size);
-    if (drop > 0) return skip(drop, "no PD0 header (0x7F7F)", error);
+    if (drop > 0) return core_.skip(drop, "no PD0 header (0x7F7F)", error);
   }
   size_t bytes = 0;
   const char* why = "";
-  switch (checkAt(0, &bytes, &why, !in_lock_ || wait_for_certainty_)) {
-    case Check::kBad: return skip(1, why, error);
+  switch (checkAt(0, &bytes, &why, !core_.in_lock || core_.wait_for_certainty)) {
+    case Check::kBad: return core_.skip(1, why, error);
     case Check::kValid:
       {
         // In lock on a live line the 16-bit sum is trusted (1 in 65536 cut frames pass): no scan.
-        const bool scan = !in_lock_ || wait_for_certainty_;
+        const bool scan = !core_.in_lock || core_.wait_for_certainty;
         const Overrun o = scan ? overrunByLaterFrame(bytes) : Overrun::kNo;
-        if (o == Overrun::kYes) return skip(1, "PD0 ensemble overrun by a later valid ensemble", error);
-        if (o == Overrun::kNotYetKnown && (!in_lock_ || wait_for_certainty_) && !buffer_.full()) {
+        if (o == Overrun::kYes) return core_.skip(1, "PD0 ensemble overrun by a later valid ensemble", error);
+        if (o == Overrun::kNotYetKnown && (!core_.in_lock || core_.wait_for_certainty) && !core_.buffer.full()) {
           return FrameStatus::kNeedMore;
         }
       }
-      in_lock_ = true;
-      last_frame_bytes_ = bytes;
-      *frame = {buffer_.offset(), d, bytes};
-      pending_ = bytes;
-      return FrameStatus::kFrame;
+      return core_.take(bytes, frame);
     case Check::kIncomplete: break;
   }
   if (size == 0) return FrameStatus::kNeedMore;
-  if (end_of_input_) return skip(size < 2 ? size : 1, "PD0 ensemble cut short by the end of the input", error);
-  if (buffer_.full()) return skip(1, "PD0 ensemble larger than the buffer", error);
+  if (core_.end_of_input) return core_.skip(size < 2 ? size : 1, "PD0 ensemble cut short by the end of the input", error);
+  if (core_.buffer.full()) return core_.skip(1, "PD0 ensemble larger than the buffer", error);
   // In lock, a frame no longer than the last one cannot hold a later one yet: no probe (steady state).
-  if (in_lock_ && size <= last_frame_bytes_) return FrameStatus::kNeedMore;
-  if (const size_t at = laterValidFrame(); at > 0) return skip(at, "PD0 header whose length runs over a later valid ensemble", error);
+  if (core_.in_lock && size <= core_.last_frame_bytes) return FrameStatus::kNeedMore;
+  if (const size_t at = laterValidFrame(); at > 0) return core_.skip(at, "PD0 header whose length runs over a later valid ensemble", error);
   return FrameStatus::kNeedMore;
 }
 

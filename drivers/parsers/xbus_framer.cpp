@@ -16,37 +16,17 @@ constexpr uint8_t kMasterBusId = 0xFF;
 bool XbusFramer::init(size_t max_payload_bytes) {
   if (max_payload_bytes == 0 || max_payload_bytes > 65535) return false;
   max_payload_ = max_payload_bytes;
-  pending_ = 0;
-  probe_ = 0;
-  end_of_input_ = false;
-  wait_for_certainty_ = false;
-  in_lock_ = false;
-  last_frame_bytes_ = 0;
-  return buffer_.init(max_payload_bytes + 7 + 4096);
-}
-
-void XbusFramer::flushPending() {
-  if (pending_ > 0) probe_ = 0;
-  buffer_.consume(pending_);
-  pending_ = 0;
-}
-
-FrameStatus XbusFramer::skip(size_t n, const char* reason, FrameError* error) {
-  *error = {buffer_.offset(), n, reason};
-  buffer_.consume(n);
-  probe_ = 0;
-  in_lock_ = false;
-  return FrameStatus::kBad;
+  return core_.init(max_payload_bytes + 7 + 4096);
 }
 
 bool XbusFramer::headerAt(size_t at) const {
-  const uint8_t* d = buffer_.data();
-  return at + 1 < buffer_.size() && d[at] == kPreamble && d[at + 1] == kMasterBusId;
+  const uint8_t* d = core_.buffer.data();
+  return at + 1 < core_.buffer.size() && d[at] == kPreamble && d[at + 1] == kMasterBusId;
 }
 
 XbusFramer::Check XbusFramer::checkAt(size_t at, size_t* frame_bytes, const char** reason) const {
-  const uint8_t* d = buffer_.data() + at;
-  const size_t avail = buffer_.size() - at;
+  const uint8_t* d = core_.buffer.data() + at;
+  const size_t avail = core_.buffer.size() - at;
   if (avail >= 2 && d[1] != kMasterBusId) {
     *reason = "Xbus bus ID is not 0xFF";
     return Check::kBad;
@@ -77,7 +57,7 @@ XbusFramer::Check XbusFramer::checkAt(size_t at, size_t* frame_bytes, const char
 
 size_t XbusFramer::laterValidFrame() {
   return deepnav::laterValidFrame(
-      buffer_.data(), buffer_.size(), kPreamble, &probe_, [this](size_t at) { return headerAt(at); },
+      core_.buffer.data(), core_.buffer.size(), kPreamble, &core_.probe, [this](size_t at) { return headerAt(at); },
       [this](size_t at, size_t* bytes) {
         const char* why = "";
         return checkAt(at, bytes, &why);
@@ -92,7 +72,7 @@ size_t XbusFramer::laterValidFrame() {
 // so the steady state of a live line never waits (a file, waitForCertainty(), always waits). The scan is a memchr over the frame: a few percent of its cost.
 XbusFramer::Overrun XbusFramer::overrunByLaterFrame(size_t frame_bytes) const {
   return deepnav::overrunByLaterFrame(
-      buffer_.data(), buffer_.size(), frame_bytes, kPreamble, end_of_input_, [this](size_t at) { return headerAt(at); },
+      core_.buffer.data(), core_.buffer.size(), frame_bytes, kPreamble, core_.end_of_input, [this](size_t at) { return headerAt(at); },
       [this](size_t at, size_t* bytes) {
         const char* why = "";
         return checkAt(at, bytes, &why);
@@ -100,40 +80,36 @@ XbusFramer::Overrun XbusFramer::overrunByLaterFrame(size_t frame_bytes) const {
 }
 
 FrameStatus XbusFramer::next(RawFrame* frame, FrameError* error) {
-  flushPending();
-  const uint8_t* d = buffer_.data();
-  const size_t size = buffer_.size();
+  core_.flushPending();
+  const uint8_t* d = core_.buffer.data();
+  const size_t size = core_.buffer.size();
   size_t start = 0;
   while (start < size && d[start] != kPreamble) ++start;
-  if (start > 0) return skip(start, "no Xbus preamble (0xFA)", error);
+  if (start > 0) return core_.skip(start, "no Xbus preamble (0xFA)", error);
   if (size == 0) return FrameStatus::kNeedMore;
   size_t bytes = 0;
   const char* why = "";
   switch (checkAt(0, &bytes, &why)) {
-    case Check::kBad: return skip(1, why, error);
+    case Check::kBad: return core_.skip(1, why, error);
     case Check::kValid:
       {
         // In lock on a live line only a certain refusal counts, and it needs a later message ending past
         // this one and the next preamble: with fewer bytes held there is nothing to scan.
-        const bool scan = !in_lock_ || wait_for_certainty_ || end_of_input_ || size > bytes + 2;
+        const bool scan = !core_.in_lock || core_.wait_for_certainty || core_.end_of_input || size > bytes + 2;
         const Overrun o = scan ? overrunByLaterFrame(bytes) : Overrun::kNo;
-        if (o == Overrun::kYes) return skip(1, "Xbus message overrun by a later valid message", error);
-        if (o == Overrun::kNotYetKnown && (!in_lock_ || wait_for_certainty_) && !buffer_.full()) {
+        if (o == Overrun::kYes) return core_.skip(1, "Xbus message overrun by a later valid message", error);
+        if (o == Overrun::kNotYetKnown && (!core_.in_lock || core_.wait_for_certainty) && !core_.buffer.full()) {
           return FrameStatus::kNeedMore;
         }
       }
-      in_lock_ = true;
-      last_frame_bytes_ = bytes;
-      *frame = {buffer_.offset(), d, bytes};
-      pending_ = bytes;
-      return FrameStatus::kFrame;
+      return core_.take(bytes, frame);
     case Check::kIncomplete: break;
   }
-  if (end_of_input_) return skip(1, "Xbus message cut short by the end of the input", error);
-  if (buffer_.full()) return skip(1, "Xbus message larger than the buffer", error);
+  if (core_.end_of_input) return core_.skip(1, "Xbus message cut short by the end of the input", error);
+  if (core_.buffer.full()) return core_.skip(1, "Xbus message larger than the buffer", error);
   // In lock, a frame no longer than the last one cannot hold a later one yet: no probe (steady state).
-  if (in_lock_ && size <= last_frame_bytes_) return FrameStatus::kNeedMore;
-  if (const size_t at = laterValidFrame(); at > 0) return skip(at, "Xbus length runs over a later valid message", error);
+  if (core_.in_lock && size <= core_.last_frame_bytes) return FrameStatus::kNeedMore;
+  if (const size_t at = laterValidFrame(); at > 0) return core_.skip(at, "Xbus length runs over a later valid message", error);
   return FrameStatus::kNeedMore;
 }
 

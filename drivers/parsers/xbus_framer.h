@@ -2,9 +2,9 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "drivers/parsers/binary_framer_core.h"
 #include "drivers/parsers/frame_result.h"
 #include "drivers/parsers/later_frame_scan.h"
-#include "drivers/parsers/stream_buffer.h"
 
 namespace deepnav {
 
@@ -20,12 +20,12 @@ namespace deepnav {
 class XbusFramer {
  public:
   bool init(size_t max_payload_bytes);
-  size_t push(const uint8_t* data, size_t n) { return flushPending(), buffer_.append(data, n); }
+  size_t push(const uint8_t* data, size_t n) { return core_.push(data, n); }
   // No byte will follow (end of a file): what is held is framed without waiting.
-  void endOfInput() { end_of_input_ = true; }
+  void endOfInput() { core_.end_of_input = true; }
   // The bytes come from a file, not a live line: waiting for later bytes costs no latency, so a
   // frame in lock whose refusal depends on bytes not yet held waits for them too.
-  void waitForCertainty() { wait_for_certainty_ = true; }
+  void waitForCertainty() { core_.wait_for_certainty = true; }
   FrameStatus next(RawFrame* frame, FrameError* error);
 
  private:
@@ -36,17 +36,9 @@ class XbusFramer {
   size_t laterValidFrame();
   using Overrun = FrameOverrun;
   Overrun overrunByLaterFrame(size_t frame_bytes) const;
-  void flushPending();
-  FrameStatus skip(size_t n, const char* reason, FrameError* error);
 
-  StreamBuffer buffer_;
+  BinaryFramerCore core_;
   size_t max_payload_ = 0;
-  size_t pending_ = 0;
-  size_t probe_ = 0;  // next buffer position the probe for a later message examines (0: not started)
-  bool end_of_input_ = false;
-  bool wait_for_certainty_ = false;
-  size_t last_frame_bytes_ = 0;  // size of the last frame returned
-  bool in_lock_ = false;  // the frame at the front follows a returned frame, nothing skipped between
 };
 
 // A framed Xbus message split into its parts (the frame as returned by XbusFramer).

@@ -5,16 +5,12 @@
 #include <cmath>
 #include <numbers>
 
+#include "base/fail.h"
 #include "base/so3.h"
 #include "nav/markers/marker_frame_chain.h"
 
 namespace deepnav {
 namespace {
-
-bool fail(std::string* error, const char* message) {
-  if (error) *error = message;
-  return false;
-}
 
 double largestEigenvalue(const Eigen::Matrix3d& m) {
   return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(m, Eigen::EigenvaluesOnly).eigenvalues()(2);

@@ -3,17 +3,10 @@
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
+#include "base/fail.h"
 #include "vision/markers/aruco_dictionary.h"
 
 namespace deepnav {
-namespace {
-
-bool fail(std::string* error, const std::string& message) {
-  if (error) *error = message;
-  return false;
-}
-
-}  // namespace
 
 bool validateMarkerDetectorConfig(const MarkerDetectorConfig& c, std::string* error) {
   int dictionary_id = 0;
