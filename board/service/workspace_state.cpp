@@ -104,7 +104,6 @@ void WorkspaceSaver::onVisionPair(const WorkspaceModel& model, const VisionConte
   if (!entered_stage2 || model.restored() || !context.panel_fixed || model.voxels() == 0) return;
   std::string dir, error;
   if (saveWorkspaceState(state_dir_, model, context.T_odom_panel, &dir, &error)) {
-    saves_.fetch_add(1, std::memory_order_release);
     std::fprintf(stderr, "deepnav run: workspace saved to %s (%d clouds, %d occupied voxels)\n", dir.c_str(),
                  model.frames(), model.voxels());
   } else {

@@ -39,7 +39,6 @@ class WorkspaceSaver {
  private:
   std::string state_dir_;
   NavStage last_stage_ = NavStage::kInit;
-  std::atomic<int> saves_{0};
   std::atomic<int> failures_{0};
 };
 

@@ -31,7 +31,9 @@ class CanBusMonitor {
   uint64_t restarts() const { return restarts_; }
   uint64_t errorFrames() const { return error_frames_; }
   uint64_t recoveryAttempts() const { return recovery_attempts_; }
+  // The controller's transmit and receive error counters from the last error-counter frame.
   int txErrors() const { return tx_errors_; }
+  int rxErrors() const { return rx_errors_; }
 
  private:
   TimeUs recovery_us_;

@@ -105,7 +105,6 @@ void ModbusTcpServer::run() {
         client_fds_.erase(client_fds_.begin() + static_cast<std::ptrdiff_t>(i));
       }
     }
-    clients_.store(static_cast<int>(client_fds_.size()), std::memory_order_relaxed);
   }
 }
 
@@ -118,7 +117,6 @@ void ModbusTcpServer::serve(int fd, bool* keep) {
     return;
   }
   if (rc == 0) return;
-  requests_.fetch_add(1, std::memory_order_relaxed);
   {
     std::lock_guard<std::mutex> lock(pending_mutex_);
     if (pending_fresh_) {
@@ -129,7 +127,6 @@ void ModbusTcpServer::serve(int fd, bool* keep) {
   }
   const int header = modbus_get_header_length(ctx_);
   if (isWriteFunction(query[header])) {
-    refused_writes_.fetch_add(1, std::memory_order_relaxed);
     if (modbus_reply_exception(ctx_, query, MODBUS_EXCEPTION_ILLEGAL_FUNCTION) < 0) *keep = false;
     return;
   }

@@ -44,9 +44,6 @@ class ModbusTcpServer {
   bool pending_fresh_ = false;
   std::thread thread_;
   std::atomic<bool> stop_{false};
-  std::atomic<std::uint64_t> requests_{0};
-  std::atomic<std::uint64_t> refused_writes_{0};
-  std::atomic<int> clients_{0};
 };
 
 }  // namespace deepnav

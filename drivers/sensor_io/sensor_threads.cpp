@@ -82,11 +82,19 @@ void SensorThreads::runDepth(LiveInputs* inputs) {
 
 SensorThreads::Status SensorThreads::status() const {
   Status s;
-  if (dvl_) s.dvl = dvl_->counters();
-  if (ahrs_) s.ahrs = ahrs_->counters();
+  if (dvl_) {
+    s.dvl = dvl_->counters();
+    s.dvl_reopens = dvl_->reopens();
+  }
+  if (ahrs_) {
+    s.ahrs = ahrs_->counters();
+    s.ahrs_reopens = ahrs_->reopens();
+  }
   if (can_) {
     s.can = can_->counters();
     s.can_bus_state = canBusStateName(can_->bus().state());
+    s.can_tx_errors = can_->bus().txErrors();
+    s.can_rx_errors = can_->bus().rxErrors();
   }
   s.depth_reads = depth_reads_.load(std::memory_order_relaxed);
   s.depth_failures = depth_failures_.load(std::memory_order_relaxed);

@@ -34,8 +34,10 @@ class SensorThreads {
  public:
   struct Status {
     SensorStreamDecoder::Counters dvl, ahrs;
+    uint64_t dvl_reopens = 0, ahrs_reopens = 0;  // serial ports opened again after vanishing
     CanSensorDriver::Counters can;
     const char* can_bus_state = "";
+    int can_tx_errors = 0, can_rx_errors = 0;  // the controller's error counters
     uint64_t depth_reads = 0, depth_failures = 0;
   };
 

@@ -27,6 +27,8 @@ class SerialSensorDriver {
   bool poll(int timeout_ms, SampleSink* sink);
   const SensorStreamDecoder::Counters& counters() const { return decoder_.counters(); }
   uint64_t bytesRead() const { return bytes_read_; }
+  // Times the port was opened again after the device vanished.
+  uint64_t reopens() const { return reopens_; }
 
  private:
   SerialSensorConfig config_;

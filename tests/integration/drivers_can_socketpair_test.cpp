@@ -181,6 +181,7 @@ TEST(CanSocketpair, ErrorFramesDriveTheBusState) {
   ASSERT_TRUE(driver.poll(100, &sink));
   EXPECT_EQ(driver.bus().state(), CanBusMonitor::State::kWarning);
   EXPECT_EQ(driver.bus().txErrors(), 97);
+  EXPECT_EQ(driver.bus().rxErrors(), 3);
   pair.sendError(CAN_ERR_CRTL, CAN_ERR_CRTL_TX_PASSIVE);
   ASSERT_TRUE(driver.poll(100, &sink));
   EXPECT_EQ(driver.bus().state(), CanBusMonitor::State::kPassive);

@@ -93,6 +93,7 @@ TEST(SerialPty, Pd0DvlFromTheRealCapture) {
   EXPECT_EQ(driver.counters().bad_frames, 0u);
   EXPECT_EQ(sink.dvl.size(), 52u);  // the ensembles with bottom track
   EXPECT_EQ(driver.bytesRead(), bytes.size());
+  EXPECT_EQ(driver.reopens(), 0u);  // the line stayed up
   for (size_t i = 1; i < sink.dvl.size(); ++i) EXPECT_GE(sink.dvl[i].t_us, sink.dvl[i - 1].t_us);
 }
 

@@ -45,7 +45,6 @@ bool VisionPipeline::init(const VisionPipelineConfig& config, std::string* error
   config_.rig.height_px = config.height_px;
   config_.dense.channels = config.channels;
   frames_seen_ = 0;
-  outside_map_pairs_ = 0;
   failed_pairs_ = 0;
   stage_failures_.fill(0);
   last_failure_ = VisionStageFailure{};
@@ -134,7 +133,7 @@ void VisionPipeline::runPlanes(const StereoFrame& frame, const VisionContext& co
 }
 
 // Stage 2's workspace filter. When it would remove nearly all of the cloud, the view is outside what
-// stage 1 mapped (not a cloud of fish and streaks): the unfiltered cloud is used and the pair counted.
+// stage 1 mapped (not a cloud of fish and streaks): the unfiltered cloud is used.
 bool VisionPipeline::filterByMap(const VisionContext& context) {
   if (!context.has_pose) return false;
   const int before = cloud_.countValid();
@@ -143,7 +142,6 @@ bool VisionPipeline::filterByMap(const VisionContext& context) {
   if (removed < 0) return false;
   if (before > 0 && before - removed < config_.map_min_kept_fraction * before) {
     unfiltered_.p_point_in_cam_m.copyTo(cloud_.p_point_in_cam_m);
-    ++outside_map_pairs_;
   }
   return true;
 }

@@ -120,7 +120,6 @@ class VisionPipeline {
   PlaneOdometryOutput plane_out_;
   WorkspaceModel workspace_;
   std::uint64_t frames_seen_ = 0;
-  std::uint64_t outside_map_pairs_ = 0;
   std::uint64_t failed_pairs_ = 0;
   std::array<std::uint64_t, static_cast<std::size_t>(VisionStage::kCount)> stage_failures_{};
   VisionStageFailure last_failure_;

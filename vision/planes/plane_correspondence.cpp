@@ -47,17 +47,13 @@ bool PlaneCorrespondenceSearch::consistent(const PlaneSet& a, const PlaneSet& b,
 int PlaneCorrespondenceSearch::find(const PlaneSet& a, const PlaneSet& b,
                                     std::array<PlaneMatch, kMaxMatches>* matches) {
   candidate_count_ = 0;
-  dropped_candidates_ = 0;
   for (int i = 0; i < a.size(); ++i) {
     for (int j = 0; j < b.size(); ++j) {
       if (std::abs(a[i].log_pdet_hessian - b[j].log_pdet_hessian) > config_.max_log_size_ratio) {
         continue;
       }
       if (a[i].n_in_cam.dot(b[j].n_in_cam) < cos_max_normal_change_) continue;
-      if (candidate_count_ == kMaxCandidates) {
-        ++dropped_candidates_;
-        continue;
-      }
+      if (candidate_count_ == kMaxCandidates) continue;  // full: later pairs are not considered
       candidate_score_[candidate_count_] = std::min(a[i].point_count, b[j].point_count);
       candidates_[candidate_count_++] = PlaneMatch{i, j};
     }

@@ -44,7 +44,6 @@ class PlaneCorrespondenceSearch {
   std::array<double, kMaxCandidates> candidate_score_{};
   std::array<Bits, kMaxCandidates> adjacent_{};
   int candidate_count_ = 0;
-  int dropped_candidates_ = 0;
   std::array<int, kMaxMatches> current_{};
   std::array<int, kMaxMatches> best_{};
   int best_size_ = 0;
