@@ -21,11 +21,19 @@ ROWS = [
     ("bench_orbvo", "BM_OrbVoFrame/min_time:3.000", "VO-ORB, one stereo pair", "<= 30 ms", "0.145 s"),
     ("bench_planes", "BM_Chain", "VO-planes chain (ELAS 64 disp, cloud, filter, planes, registration)",
      "<= 150 ms", "3.151 s"),
+    # ELAS rows, 6th field: libelas (its published source, one core) on the same input, measured on this
+    # machine by an earlier session (issue 20): (peer name, seconds); the row shows the ratio ours / peer.
     ("bench_stereo", "BM_ElasDiveRobotics", "ELAS robotics, rendered dive pair, 64 disparities", "<= 21.5 ms",
-     ""),
-    ("bench_stereo", "BM_ElasDiveDense", "ELAS dense, rendered dive pair, 64 disparities", "<= 21.5 ms", ""),
+     "", ("libelas ROBOTICS", 43e-3)),
+    ("bench_stereo", "BM_ElasDiveDense", "ELAS dense, rendered dive pair, 64 disparities", "<= 21.5 ms", "",
+     ("libelas ROBOTICS", 43e-3)),
+    ("bench_stereo", "BM_ElasTsukubaDense", "ELAS dense, Middlebury tsukuba", "", "", ("libelas", 22.1e-3)),
     ("bench_stereo", "BM_Sgbm/wls:0", "SGBM (3-way)", "", ""),
-    ("bench_planes", "BM_PlaneExtraction/step:1", "plane extraction", "<= 15 ms", ""),
+    # CAPE (Proenca & Gao, IROS 2018): about 3.3 ms per 640x480 cloud on one core, from the paper (ours: 688x516,
+    # 1.16x the pixels).
+    ("bench_planes", "BM_PlaneExtraction/step:1", "plane extraction, 688x516 cloud", "<= 5 ms", "",
+     ("CAPE 640x480 (paper)", 3.3e-3)),
+    ("bench_planes", "BM_PlaneExtraction/step:2", "plane extraction, 2-px grid (the chain's)", "", ""),
     ("bench_planes", "BM_PlaneRegistration", "plane registration", "", ""),
     ("bench_iqa", "BM_MdmGrey688x516", "MDM, grey", "<= 3 ms", ""),
     ("bench_markers", "BM_MarkersDetectAndPoseGrey688x516OneThread", "marker detection + pose", "", ""),
@@ -97,9 +105,11 @@ def main():
     bin_dir = os.path.join(args.build, "bin")
     results = run_benchmarks(bin_dir)
     lines = [f"Machine: {platform.machine()}, {os.cpu_count()} cores, {platform.platform()}", "",
-             "| stage | CPU time | target | paper |", "|---|---|---|---|"]
-    for binary, name, label, target, paper in ROWS:
+             "| stage | CPU time | target | paper or peer |", "|---|---|---|---|"]
+    for binary, name, label, target, paper, *peer in ROWS:
         t = results.get((binary, name))
+        if peer:
+            paper = f"{peer[0][0]} {human(peer[0][1])}" + (f": ours {t / peer[0][1]:.2f}x its time" if t else "")
         lines.append(f"| {label} | {human(t) if t is not None else 'not run'} | {target} | {paper} |")
     dive_s, wall_s, peak_mib = replay_figures(bin_dir, args.recording)
     lines += ["", "| replay (full two-stage pipeline) | value |", "|---|---|",
