@@ -13,7 +13,8 @@ using P = ParamSpec<BoardConfig>;
 
 #define DEEPNAV_FIELD(expr) [](BoardConfig& c) -> void* { return &c.expr; }
 
-const std::array kBoardParams = {
+// Up to the markers' own keys (the panel pose estimator's and the marker covariance model's follow).
+const std::array kBoardHeadParams = {
     P{"loop.rate_hz", ParamType::kInt, "Hz", 10, 1000, "100", "", "nav loop tick rate",
       DEEPNAV_FIELD(loop.rate_hz)},
     P{"loop.budget_us", ParamType::kInt, "us", 100, 100000, "2000", "",
@@ -48,15 +49,16 @@ const std::array kBoardParams = {
       "recorder queue between the loop and the MCAP writer thread", DEEPNAV_FIELD(buffers.record)},
     P{"recording.enabled", ParamType::kBool, "-", 0, 0, "true", "", "record every consumed sample and output",
       DEEPNAV_FIELD(recording.enabled)},
-    P{"recording.compression", ParamType::kChoice, "-", 0, 0, "zstd", "zstd|lz4|none",
-      "MCAP chunk compression", DEEPNAV_FIELD(recording.compression)},
-    P{"recording.chunk_max_duration_s", ParamType::kDouble, "s", 0.01, 1.0, "1.0", "",
+    // Default nullptr: RecordingOptions' initialiser (drivers/recording/recording_writer.h), read as it is.
+    P{"recording.compression", ParamType::kChoice, "-", 0, 0, nullptr, "zstd|lz4|none",
+      "MCAP chunk compression", DEEPNAV_FIELD(recording.options.compression)},
+    P{"recording.chunk_max_duration_s", ParamType::kDouble, "s", 0.01, 1.0, nullptr, "",
       "a chunk closes (and is flushed to disk) at least this often, bounding what a crash loses",
-      DEEPNAV_FIELD(recording.chunk_max_duration_s)},
-    P{"recording.chunk_size_kib", ParamType::kInt, "KiB", 16, 65536, "4096", "",
-      "a chunk closes when its uncompressed size exceeds this", DEEPNAV_FIELD(recording.chunk_size_kib)},
-    P{"recording.record_images", ParamType::kBool, "-", 0, 0, "true", "",
-      "record stereo images (large) besides the navigation samples", DEEPNAV_FIELD(recording.record_images)},
+      DEEPNAV_FIELD(recording.options.chunk_max_duration_s)},
+    P{"recording.chunk_size_kib", ParamType::kInt, "KiB", 16, 65536, nullptr, "",
+      "a chunk closes when its uncompressed size exceeds this", DEEPNAV_FIELD(recording.options.chunk_size_kib)},
+    P{"recording.record_images", ParamType::kBool, "-", 0, 0, nullptr, "",
+      "record stereo images (large) besides the navigation samples", DEEPNAV_FIELD(recording.options.record_images)},
     P{"camera.width_px", ParamType::kInt, "px", 16, 8192, "688", "", "image width of each camera",
       DEEPNAV_FIELD(camera.width_px)},
     P{"camera.height_px", ParamType::kInt, "px", 16, 8192, "516", "", "image height of each camera",
@@ -152,35 +154,17 @@ const std::array kBoardParams = {
     P{"markers.panel_file", ParamType::kString, "path", 0, 0, "''", "",
       "panel description (knowledge base), relative to the board file; empty: no markers",
       DEEPNAV_FIELD(markers.panel_file)},
-    P{"markers.panel_min_observations", ParamType::kInt, "-", 1, 100000, "30", "",
-      "marker observations before the panel pose can be fixed", DEEPNAV_FIELD(markers.panel_min_observations)},
-    P{"markers.panel_min_distinct_markers", ParamType::kInt, "-", 1, 4096, "2", "",
-      "distinct markers before the panel pose can be fixed", DEEPNAV_FIELD(markers.panel_min_distinct_markers)},
-    P{"markers.panel_max_position_std_m", ParamType::kDouble, "m", 0.001, 10, "0.05", "",
-      "position scatter below which the panel pose is fixed", DEEPNAV_FIELD(markers.panel_max_position_std_m)},
-    P{"markers.panel_max_angle_std_rad", ParamType::kDouble, "rad", 0.0001, 1, "0.035", "",
-      "rotation scatter below which the panel pose is fixed", DEEPNAV_FIELD(markers.panel_max_angle_std_rad)},
-    P{"markers.max_distance_m", ParamType::kDouble, "m", 0.1, 50, "4.0", "",
-      "markers farther than this are not used for the panel pose", DEEPNAV_FIELD(markers.max_distance_m)},
-    P{"markers.pos_floor_m", ParamType::kDouble, "m", 0, 1, "0.01", "",
-      "marker pose position 1-sigma at zero distance", DEEPNAV_FIELD(markers.pos_floor_m)},
-    P{"markers.pos_per_d2_per_m", ParamType::kDouble, "1/m", 0, 1, "0.01", "",
-      "growth of the position 1-sigma with the squared distance", DEEPNAV_FIELD(markers.pos_per_d2_per_m)},
-    P{"markers.rot_floor_rad", ParamType::kDouble, "rad", 0, 1, "0.0087", "",
-      "marker pose rotation 1-sigma at zero distance", DEEPNAV_FIELD(markers.rot_floor_rad)},
-    P{"markers.rot_per_d_rad_per_m", ParamType::kDouble, "rad/m", 0, 1, "0.0087", "",
-      "growth of the rotation 1-sigma with distance", DEEPNAV_FIELD(markers.rot_per_d_rad_per_m)},
-    P{"stage.min_workspace_time_s", ParamType::kDouble, "s", 0, 86400, "30", "",
-      "time in stage 1 (workspace definition) before stage 2", DEEPNAV_FIELD(stage.min_workspace_time_s)},
-    P{"stage.min_faces_seen_fraction", ParamType::kDouble, "-", 0, 1, "0.5", "",
-      "fraction of the panel faces seen in stage 1 before stage 2", DEEPNAV_FIELD(stage.min_faces_seen_fraction)},
+};
+
+// Between the markers' keys and the stage machine's.
+const std::array kStageBoardParams = {
     P{"stage.fuse_markers_in_stage2", ParamType::kBool, "-", 0, 0, "true", "",
       "fuse marker robot poses in stage 2 (false: the paper's T_L3, VO and navigation sensors only)",
       DEEPNAV_FIELD(stage.fuse_markers_in_stage2)},
-    P{"stage.stage2_without_panel", ParamType::kBool, "-", 0, 0, "false", "",
-      "a run without a panel (marker-less rig, e.g. board/euroc) enters stage 2 (VO fused) once the filter is aligned "
-      "(false: it stays in stage 1 and no VO is fused)",
-      DEEPNAV_FIELD(stage.stage2_without_panel)},
+};
+
+// Between the stage machine's keys and the filter's (ekfParams()).
+const std::array kBoardTailParams = {
     P{"vision.vo_mode", ParamType::kChoice, "-", 0, 0, "adaptive", "adaptive|all|orb|planes|none",
       "stage-2 visual odometry: adaptive (paper), all (both fused), orb, planes, none (T_L1)",
       DEEPNAV_FIELD(vision.vo_mode)},
@@ -327,128 +311,6 @@ const std::array kBoardParams = {
       DEEPNAV_FIELD(modbus_depth.rate_hz)},
     P{"modbus_depth.timeout_ms", ParamType::kInt, "ms", 5, 5000, "100", "", "Modbus response timeout",
       DEEPNAV_FIELD(modbus_depth.timeout_ms)},
-    P{"ekf.gravity_mps2", ParamType::kDouble, "m/s^2", 9.7, 9.9, "9.80665", "", "local gravity magnitude",
-      DEEPNAV_FIELD(ekf.gravity_mps2)},
-    P{"ekf.imu_rotation_deg", ParamType::kRotation, "deg", -180, 180, "[0, 0, 0]", "", "mounting rotation IMU -> robot, [roll, pitch, yaw]",
-      DEEPNAV_FIELD(ekf.q_robot_imu)},
-    P{"ekf.p_imu_in_robot_m", ParamType::kVec3, "m", -10, 10, "[0, 0, 0]", "", "IMU lever arm in the robot frame (FLU)",
-      DEEPNAV_FIELD(ekf.p_imu_in_robot_m)},
-    P{"ekf.dvl_rotation_deg", ParamType::kRotation, "deg", -180, 180, "[0, 0, 0]", "", "mounting rotation DVL -> robot, [roll, pitch, yaw]",
-      DEEPNAV_FIELD(ekf.q_robot_dvl)},
-    P{"ekf.p_dvl_in_robot_m", ParamType::kVec3, "m", -10, 10, "[0, 0, 0]", "", "DVL lever arm in the robot frame",
-      DEEPNAV_FIELD(ekf.p_dvl_in_robot_m)},
-    P{"ekf.p_depth_in_robot_m", ParamType::kVec3, "m", -10, 10, "[0, 0, 0]", "", "pressure port position in the robot frame",
-      DEEPNAV_FIELD(ekf.p_depth_in_robot_m)},
-    P{"ekf.gyro_arw_radps_rthz", ParamType::kDouble, "rad/s/sqrt(Hz)", 1e-07, 1, "1.0e-4", "", "gyro angle random walk",
-      DEEPNAV_FIELD(ekf.gyro_arw_radps_rthz)},
-    P{"ekf.accel_vrw_mps2_rthz", ParamType::kDouble, "m/s^2/sqrt(Hz)", 1e-06, 10, "1.0e-3", "", "accelerometer velocity random walk",
-      DEEPNAV_FIELD(ekf.accel_vrw_mps2_rthz)},
-    P{"ekf.gyro_bias_rw_radps2_rthz", ParamType::kDouble, "rad/s^2/sqrt(Hz)", 0, 1, "1.0e-5", "", "gyro bias random walk",
-      DEEPNAV_FIELD(ekf.gyro_bias_rw_radps2_rthz)},
-    P{"ekf.accel_bias_rw_mps3_rthz", ParamType::kDouble, "m/s^3/sqrt(Hz)", 0, 10, "1.0e-4", "", "accelerometer bias random walk",
-      DEEPNAV_FIELD(ekf.accel_bias_rw_mps3_rthz)},
-    P{"ekf.gyro_bias_gm_tau_s", ParamType::kDouble, "s", 0, 1e6, "0", "", "gyro bias as a first-order Gauss-Markov process of this correlation time, on top of the random walk (0: off; else >= 1)",
-      DEEPNAV_FIELD(ekf.gyro_bias_gm_tau_s)},
-    P{"ekf.gyro_bias_gm_sigma_radps", ParamType::kDouble, "rad/s", 0, 0.1, "0", "", "steady-state 1-sigma of the gyro bias Gauss-Markov process (bias instability / 0.6174)",
-      DEEPNAV_FIELD(ekf.gyro_bias_gm_sigma_radps)},
-    P{"ekf.accel_bias_gm_tau_s", ParamType::kDouble, "s", 0, 1e6, "0", "", "accelerometer bias Gauss-Markov correlation time (0: off; else >= 1)",
-      DEEPNAV_FIELD(ekf.accel_bias_gm_tau_s)},
-    P{"ekf.accel_bias_gm_sigma_mps2", ParamType::kDouble, "m/s^2", 0, 1, "0", "", "steady-state 1-sigma of the accelerometer bias Gauss-Markov process",
-      DEEPNAV_FIELD(ekf.accel_bias_gm_sigma_mps2)},
-    P{"ekf.init_pos_sigma_m", ParamType::kDouble, "m", 0.0001, 10000.0, "0.1", "", "initial position 1-sigma",
-      DEEPNAV_FIELD(ekf.init_pos_sigma_m)},
-    P{"ekf.init_vel_sigma_mps", ParamType::kDouble, "m/s", 0.0001, 100, "0.1", "", "initial velocity 1-sigma",
-      DEEPNAV_FIELD(ekf.init_vel_sigma_mps)},
-    P{"ekf.init_yaw_sigma_rad", ParamType::kDouble, "rad", 0.0001, 3.5, "0.1", "", "initial yaw 1-sigma (after the first heading)",
-      DEEPNAV_FIELD(ekf.init_yaw_sigma_rad)},
-    P{"ekf.dvl_sigma_mps", ParamType::kDouble, "m/s", 1e-05, 1, "0.01", "", "DVL velocity 1-sigma per axis when the sample carries none",
-      DEEPNAV_FIELD(ekf.dvl_sigma_mps)},
-    P{"ekf.depth_sigma_m", ParamType::kDouble, "m", 0.0001, 10, "0.05", "", "depth 1-sigma when the sample carries none",
-      DEEPNAV_FIELD(ekf.depth_sigma_m)},
-    P{"ekf.heading_sigma_rad", ParamType::kDouble, "rad", 0.0001, 1, "0.035", "", "compass heading 1-sigma when the sample carries none",
-      DEEPNAV_FIELD(ekf.heading_sigma_rad)},
-    P{"ekf.attitude_sigma_rad", ParamType::kDouble, "rad", 1e-05, 1, "0.0087", "", "AHRS roll/pitch 1-sigma when the sample carries none",
-      DEEPNAV_FIELD(ekf.attitude_sigma_rad)},
-    P{"ekf.heading_sigma_floor_rad", ParamType::kDouble, "rad", 0, 1, "0", "", "compass samples' 1-sigma raised to at least this (0: the sample's own)",
-      DEEPNAV_FIELD(ekf.heading_sigma_floor_rad)},
-    P{"ekf.dvl_scale_prior_sigma", ParamType::kDouble, "-", 0, 0.2, "0", "", "prior 1-sigma of the estimated DVL scale factor, a fraction (0: not estimated)",
-      DEEPNAV_FIELD(ekf.dvl_scale_prior_sigma)},
-    P{"ekf.dvl_misalignment_prior_sigma_rad", ParamType::kDouble, "rad", 0, 0.2, "0", "", "prior 1-sigma of each of the 3 estimated DVL misalignment angles (0: not estimated)",
-      DEEPNAV_FIELD(ekf.dvl_misalignment_prior_sigma_rad)},
-    P{"ekf.dvl_bias_prior_sigma_mps", ParamType::kDouble, "m/s", 0, 0.5, "0", "", "prior 1-sigma of each of the 3 estimated DVL velocity biases, DVL axes (0: not estimated)",
-      DEEPNAV_FIELD(ekf.dvl_bias_prior_sigma_mps)},
-    P{"ekf.heading_bias_prior_sigma_rad", ParamType::kDouble, "rad", 0, 0.5, "0", "", "prior 1-sigma of the estimated compass residual bias (0: not estimated)",
-      DEEPNAV_FIELD(ekf.heading_bias_prior_sigma_rad)},
-    P{"ekf.heading_deviation_prior_sigma_rad", ParamType::kDouble, "rad", 0, 0.5, "0", "", "prior 1-sigma of each estimated compass deviation term B sin psi, C cos psi, D sin 2psi, E cos 2psi (0: not estimated)",
-      DEEPNAV_FIELD(ekf.heading_deviation_prior_sigma_rad)},
-    P{"ekf.magnetic_declination_rad", ParamType::kDouble, "rad", -3.15, 3.15, "0.0", "", "true = magnetic + declination (east positive)",
-      DEEPNAV_FIELD(ekf.magnetic_declination_rad)},
-    P{"ekf.heading_bias_rad", ParamType::kDouble, "rad", -3.15, 3.15, "0.0", "", "compass bias (measured = true + bias), e.g. hard iron",
-      DEEPNAV_FIELD(ekf.heading_bias_rad)},
-    P{"ekf.mag_disturbance_enabled", ParamType::kBool, "-", 0, 0, "false", "", "watch the compass for magnetic disturbance (heading innovation offset while the yaw is held): de-weight, then refuse it, recover with hysteresis",
-      DEEPNAV_FIELD(ekf.mag_disturbance_enabled)},
-    P{"ekf.mag_disturbance_tau_s", ParamType::kDouble, "s", 0.1, 600, "3.0", "", "time constant of the low-passed normalised heading innovation",
-      DEEPNAV_FIELD(ekf.mag_disturbance_tau_s)},
-    P{"ekf.mag_disturbance_suspect_sigma", ParamType::kDouble, "sigma", 0.1, 100, "1.0", "", "low-passed normalised heading innovation above which the compass is de-weighted (> exit)",
-      DEEPNAV_FIELD(ekf.mag_disturbance_suspect_sigma)},
-    P{"ekf.mag_disturbance_enter_sigma", ParamType::kDouble, "sigma", 0.1, 100, "2.0", "", "above which the compass is refused (>= suspect)",
-      DEEPNAV_FIELD(ekf.mag_disturbance_enter_sigma)},
-    P{"ekf.mag_disturbance_exit_sigma", ParamType::kDouble, "sigma", 0.01, 100, "0.5", "", "below which, for exit_hold_s, the compass is trusted again",
-      DEEPNAV_FIELD(ekf.mag_disturbance_exit_sigma)},
-    P{"ekf.mag_disturbance_exit_hold_s", ParamType::kDurationS, "s", 0, 600, "3.0", "", "how long the innovations must stay consistent before the compass is trusted again",
-      DEEPNAV_FIELD(ekf.mag_disturbance_exit_hold_us)},
-    P{"ekf.mag_disturbance_r_scale", ParamType::kDouble, "-", 1, 1e6, "25.0", "", "compass variance factor while de-weighted",
-      DEEPNAV_FIELD(ekf.mag_disturbance_r_scale)},
-    P{"ekf.mag_disturbance_yaw_held_ratio", ParamType::kDouble, "-", 0.001, 1000, "1.0", "", "the compass is judged only while the predicted yaw variance H P H^T is below this times its variance R",
-      DEEPNAV_FIELD(ekf.mag_disturbance_yaw_held_ratio)},
-    P{"ekf.mag_disturbance_aided_window_s", ParamType::kDurationS, "s", 0.01, 600, "2.0", "", "the compass is judged only within this time of a fused marker pose (without one it is the only heading reference)",
-      DEEPNAV_FIELD(ekf.mag_disturbance_aided_window_us)},
-    P{"ekf.gate_dvl_sigma", ParamType::kDouble, "sigma", 1, 100, "3.0", "", "DVL innovation gate",
-      DEEPNAV_FIELD(ekf.gate_dvl_sigma)},
-    P{"ekf.gate_depth_sigma", ParamType::kDouble, "sigma", 1, 100, "3.0", "", "depth innovation gate",
-      DEEPNAV_FIELD(ekf.gate_depth_sigma)},
-    P{"ekf.gate_heading_sigma", ParamType::kDouble, "sigma", 1, 100, "3.0", "", "compass innovation gate",
-      DEEPNAV_FIELD(ekf.gate_heading_sigma)},
-    P{"ekf.gate_attitude_sigma", ParamType::kDouble, "sigma", 1, 100, "3.0", "", "AHRS innovation gate",
-      DEEPNAV_FIELD(ekf.gate_attitude_sigma)},
-    P{"ekf.gate_pose_sigma", ParamType::kDouble, "sigma", 1, 100, "3.0", "", "marker pose innovation gate",
-      DEEPNAV_FIELD(ekf.gate_pose_sigma)},
-    P{"ekf.gate_relative_pose_sigma", ParamType::kDouble, "sigma", 1, 100, "3.0", "", "visual odometry innovation gate",
-      DEEPNAV_FIELD(ekf.gate_relative_pose_sigma)},
-    P{"ekf.timeout_imu_s", ParamType::kDurationS, "s", 0, 10, "0.05", "", "IMU stale after this long without a sample (0: not monitored)",
-      DEEPNAV_FIELD(ekf.timeout_imu_us)},
-    P{"ekf.timeout_dvl_s", ParamType::kDurationS, "s", 0, 60, "1.0", "", "DVL stale timeout",
-      DEEPNAV_FIELD(ekf.timeout_dvl_us)},
-    P{"ekf.timeout_depth_s", ParamType::kDurationS, "s", 0, 60, "1.0", "", "depth stale timeout",
-      DEEPNAV_FIELD(ekf.timeout_depth_us)},
-    P{"ekf.timeout_heading_s", ParamType::kDurationS, "s", 0, 60, "1.0", "", "compass stale timeout",
-      DEEPNAV_FIELD(ekf.timeout_heading_us)},
-    P{"ekf.timeout_attitude_s", ParamType::kDurationS, "s", 0, 60, "1.0", "", "AHRS stale timeout",
-      DEEPNAV_FIELD(ekf.timeout_attitude_us)},
-    P{"ekf.max_delay_s", ParamType::kDurationS, "s", 0.01, 2.0, "0.5", "", "measurements older than this are dropped and counted; stamped this far ahead of the loop's clock, refused (a jumped clock)",
-      DEEPNAV_FIELD(ekf.max_delay_us)},
-    P{"ekf.history_imu_capacity", ParamType::kInt, "epochs", 8, 4096, "160", "", "IMU epochs kept for re-propagation (cover max_delay at the IMU rate)",
-      DEEPNAV_FIELD(ekf.history_imu_capacity)},
-    P{"ekf.history_meas_capacity", ParamType::kInt, "measurements", 8, 4096, "128", "", "measurements kept for re-fusion inside the window",
-      DEEPNAV_FIELD(ekf.history_meas_capacity)},
-    P{"ekf.align_imu_samples", ParamType::kInt, "samples", 1, 1000, "20", "", "IMU samples averaged for the initial roll/pitch",
-      DEEPNAV_FIELD(ekf.align_imu_samples)},
-    P{"ekf.align_imu_only", ParamType::kBool, "-", 0, 0, "false", "",
-      "align from the IMU alone, yaw 0 and z 0 at the start, for a vehicle with no compass and no depth sensor "
-      "(false: the alignment waits for both)",
-      DEEPNAV_FIELD(ekf.align_imu_only)},
-    P{"ekf.align_gyro_bias_at_rest", ParamType::kBool, "-", 0, 0, "false", "",
-      "the robot is at rest while aligning: the mean rate over the alignment samples is the initial gyro bias "
-      "(false: it starts at 0)",
-      DEEPNAV_FIELD(ekf.align_gyro_bias_at_rest)},
-    P{"ekf.stuck_after_samples", ParamType::kInt, "samples", 0, 1000, "5", "", "a DVL, depth, compass or AHRS sample bit-identical to the previous n-1 is refused as frozen (0: off; else >= 2)",
-      DEEPNAV_FIELD(ekf.stuck_after_samples)},
-    P{"ekf.imu_stuck_after_samples", ParamType::kInt, "samples", 0, 100000, "10", "", "an IMU sample bit-identical (rates and specific force) to the previous n-1 is refused as frozen and the state coasts (0: off; else >= 2)",
-      DEEPNAV_FIELD(ekf.imu_stuck_after_samples)},
-    P{"ekf.gate_reset_after_s", ParamType::kDurationS, "s", 0, 60, "2.0", "", "a DVL, depth, compass or AHRS source rejected this long gets the states it observes reset to their initial sigmas (0: never)",
-      DEEPNAV_FIELD(ekf.gate_reset_after_us)},
-    P{"ekf.coast_accel_noise_mps2_rthz", ParamType::kDouble, "m/s^2/sqrt(Hz)", 0, 10, "0.1", "", "IMU outage: the solution coasts on the last velocity, its covariance grown for a white acceleration of this density",
-      DEEPNAV_FIELD(ekf.coast_accel_noise_mps2_rthz)},
 };
 
 #undef DEEPNAV_FIELD
@@ -478,19 +340,63 @@ bool checkDenseStereoSize(const BoardConfig& c, const std::string& name, std::st
   return true;
 }
 
+// Where a board's default differs from the module's own: the bare filter checks no frozen IMU (its tests feed
+// a noiseless resting IMU), a vehicle's IMU noise never repeats.
+struct BoardDefault {
+  const char* key;
+  const char* default_text;
+};
+constexpr BoardDefault kBoardDefaults[] = {{"ekf.imu_stuck_after_samples", "10"}};
+
+// Every key of a board file, in the order `deepnav config --list` prints them, bound to `c`.
+std::vector<ParamSpecView> boardParams(BoardConfig& c) {
+  std::vector<ParamSpecView> views = bindParams(kBoardHeadParams, c);
+  appendModuleParams(panelPoseParams(), kMarkersSection, c.markers.panel_pose, &views);
+  appendModuleParams(markerCovarianceParams(), kMarkersSection, c.markers.covariance, &views);
+  const std::vector<ParamSpecView> stage = bindParams(kStageBoardParams, c);
+  views.insert(views.end(), stage.begin(), stage.end());
+  appendModuleParams(stageParams(), kStageSection, c.stage.machine, &views);
+  const std::vector<ParamSpecView> tail = bindParams(kBoardTailParams, c);
+  views.insert(views.end(), tail.begin(), tail.end());
+  appendModuleParams(ekfParams(), kEkfSection, c.ekf, &views);
+  for (const BoardDefault& d : kBoardDefaults) {
+    for (ParamSpecView& v : views) {
+      if (v.key == d.key) v.default_text = d.default_text;
+    }
+  }
+  return views;
+}
+
+// The module configs' own checks: their declared ranges (which the file's keys already passed) and the
+// rules between fields.
+bool validateModules(const BoardConfig& c, std::string* error) {
+  return validateEkfConfig(c.ekf, error) && validateStageConfig(c.stage.machine, error) &&
+         validatePanelPoseConfig(c.markers.panel_pose, error) &&
+         validateMarkerCovarianceConfig(c.markers.covariance, error);
+}
+
 }  // namespace
 
 BoardConfig defaultBoardConfig() {
   BoardConfig config{};
   std::string error;
   // Every default is valid by construction (BoardConfig.DeclaredDefaultsAreAllValid checks it).
-  applyDefaults(bindParams(kBoardParams, config), &error);
+  applyDefaults(boardParams(config), &error);
   return config;
 }
 
 bool checkBoardDefaults(std::string* error) {
   BoardConfig config{};
-  return applyDefaults(bindParams(kBoardParams, config), error) && validateEkfConfig(config.ekf, error);
+  const std::vector<ParamSpecView> views = boardParams(config);
+  if (!applyDefaults(views, error)) return false;
+  // A default taken from a struct's initialiser was never parsed: it must lie in the declared range too.
+  for (const ParamSpecView& v : views) {
+    if (!paramInRange(v.type, v.min, v.max, v.choices, v.target)) {
+      if (error) *error = "<built-in defaults>: key '" + v.key + "' is out of its declared range";
+      return false;
+    }
+  }
+  return validateModules(config, error);
 }
 
 bool loadBoardConfigText(const std::string& text, const std::string& name, BoardConfig* config,
@@ -498,10 +404,10 @@ bool loadBoardConfigText(const std::string& text, const std::string& name, Board
   *config = defaultBoardConfig();
   YAML::Node root;
   if (!parseYamlDocument(text, name, &root, error)) return false;
-  if (!applyParams(bindParams(kBoardParams, *config), root, name, error)) return false;
-  std::string ekf_error;
-  if (!validateEkfConfig(config->ekf, &ekf_error)) {
-    if (error) *error = name + ": " + ekf_error;
+  if (!applyParams(boardParams(*config), root, name, error)) return false;
+  std::string module_error;
+  if (!validateModules(*config, &module_error)) {
+    if (error) *error = name + ": " + module_error;
     return false;
   }
   return checkDenseStereoSize(*config, name, error);
@@ -518,7 +424,7 @@ bool loadBoardConfig(const std::string& path, BoardConfig* config, std::string* 
 
 std::string describeBoardParams() {
   BoardConfig config{};
-  return describeParams(bindParams(kBoardParams, config));
+  return describeParams(boardParams(config));
 }
 
 }  // namespace deepnav

@@ -5,14 +5,20 @@
 
 #include "board/config/param_table.h"
 #include "drivers/camera/camera_config.h"
+#include "drivers/recording/recording_writer.h"
 #include "nav/ekf/ekf_config.h"
+#include "nav/markers/marker_pose_covariance.h"
+#include "nav/markers/panel_pose_config.h"
+#include "nav/stage/stage_config.h"
 
 #include <Eigen/Geometry>
 
 namespace deepnav {
 
-// Everything one vehicle's board.yaml sets. Each field is declared once, with unit, default and range,
-// in kBoardParams (board_config.cpp); the comments here only say what the group is for.
+// Everything one vehicle's board.yaml sets. Each field is declared once, with unit, default and range:
+// the board's own in board_config.cpp, a module's next to its config struct (ekfParams(), stageParams(),
+// panelPoseParams(), markerCovarianceParams()), whose structs are held here as the module reads them (no
+// copies). The comments here only say what the group is for.
 struct BoardConfig {
   struct Loop {
     int rate_hz;             // nav loop tick rate
@@ -34,10 +40,7 @@ struct BoardConfig {
   } buffers;
   struct Recording {
     bool enabled;
-    std::string compression;  // zstd | lz4 | none
-    double chunk_max_duration_s;
-    int chunk_size_kib;
-    bool record_images;
+    RecordingOptions options;  // the recorder's: compression, chunk_*, record_images (image size: camera.*)
   } recording;
   struct Camera {
     int width_px;
@@ -67,21 +70,12 @@ struct BoardConfig {
     bool enabled;               // false: no marker detection, no panel pose, no marker pose fused
     bool panel_in_filter;       // the fixed panel as a clone in the EKF (nav/pipeline/panel_anchor.h)
     std::string panel_file;     // panel description (knowledge base); empty: no markers
-    int panel_min_observations;
-    int panel_min_distinct_markers;
-    double panel_max_position_std_m;
-    double panel_max_angle_std_rad;
-    double max_distance_m;
-    double pos_floor_m;
-    double pos_per_d2_per_m;
-    double rot_floor_rad;
-    double rot_per_d_rad_per_m;
+    PanelPoseConfig panel_pose;          // markers.panel_min_observations ... markers.max_distance_m
+    MarkerCovarianceConfig covariance;   // markers.pos_floor_m ... markers.rot_per_d_rad_per_m
   } markers;
   struct Stage {
-    double min_workspace_time_s;
-    double min_faces_seen_fraction;
     bool fuse_markers_in_stage2;  // false: the paper's T_L3 (stage 2 on VO and nav sensors alone)
-    bool stage2_without_panel;    // no panel: stage 2 (VO) once aligned (a marker-less rig)
+    StageConfig machine;          // stage.min_workspace_time_s, min_faces_seen_fraction, stage2_without_panel
   } stage;
   struct Vision {                 // the vision worker (vision/pipeline/vision_pipeline.h)
     std::string vo_mode;          // adaptive | all | orb | planes | none

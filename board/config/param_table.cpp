@@ -1,5 +1,6 @@
 #include "board/config/param_table.h"
 
+#include <charconv>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -14,20 +15,7 @@
 namespace deepnav {
 namespace {
 
-std::string rangeText(const ParamSpecView& p) {
-  std::ostringstream s;
-  switch (p.type) {
-    case ParamType::kBool: return "true or false";
-    case ParamType::kString: return "a string";
-    case ParamType::kChoice: s << "one of " << p.choices; return s.str();
-    case ParamType::kInt: s << "an integer in [" << p.min << ", " << p.max << "]"; return s.str();
-    case ParamType::kDouble: s << "a number in [" << p.min << ", " << p.max << "]"; return s.str();
-    case ParamType::kVec3: s << "a list of 3 numbers, each in [" << p.min << ", " << p.max << "]"; return s.str();
-    case ParamType::kRotation: s << "[roll, pitch, yaw], each in [" << p.min << ", " << p.max << "]"; return s.str();
-    case ParamType::kDurationS: s << "a duration in [" << p.min << ", " << p.max << "]"; return s.str();
-  }
-  return "?";
-}
+std::string rangeText(const ParamSpecView& p) { return paramRangeText(p.type, p.min, p.max, p.choices); }
 
 bool fail(std::string* error, const std::string& file, const ParamSpecView& p, const std::string& what) {
   if (error) {
@@ -164,6 +152,7 @@ YAML::Node lookup(const YAML::Node& node, const std::string& dotted) {
 
 bool applyDefaults(const std::vector<ParamSpecView>& params, std::string* error) {
   for (const auto& p : params) {
+    if (p.default_text == nullptr) continue;  // the module's initialiser, already in the target
     if (!applyScalar(p, YAML::Load(p.default_text), "<built-in defaults>", error)) return false;
   }
   return true;
@@ -195,6 +184,42 @@ bool applyParams(const std::vector<ParamSpecView>& params, const YAML::Node& roo
 
 namespace {
 
+// The shortest text that reads back as the same double ("0.0001", "9.80665"); -0 written as 0.
+std::string numberText(double v) {
+  char buf[32];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v + 0.0);
+  return std::string(buf, r.ptr);
+}
+
+std::string listText(const Eigen::Vector3d& v) {
+  std::ostringstream s;
+  s << '[' << numberText(v.x()) << ", " << numberText(v.y()) << ", " << numberText(v.z()) << ']';
+  return s.str();
+}
+
+// A target's value written as its key is written in a file (a module default, for the documentation).
+std::string valueText(const ParamSpecView& p) {
+  switch (p.type) {
+    case ParamType::kBool: return *static_cast<const bool*>(p.target) ? "true" : "false";
+    case ParamType::kInt: return std::to_string(*static_cast<const int*>(p.target));
+    case ParamType::kDouble: return numberText(*static_cast<const double*>(p.target));
+    case ParamType::kString:
+    case ParamType::kChoice: {
+      const auto& v = *static_cast<const std::string*>(p.target);
+      return v.empty() ? "''" : v;
+    }
+    case ParamType::kVec3: return listText(*static_cast<const Eigen::Vector3d*>(p.target));
+    case ParamType::kRotation: {
+      // [roll, pitch, yaw] of R = Rz(yaw) Ry(pitch) Rx(roll), as applyScalar composes it.
+      const Eigen::Matrix3d R = static_cast<const Eigen::Quaterniond*>(p.target)->toRotationMatrix();
+      const Eigen::Vector3d rpy(std::atan2(R(2, 1), R(2, 2)), std::asin(-R(2, 0)), std::atan2(R(1, 0), R(0, 0)));
+      return listText(rpy * (180.0 / M_PI));
+    }
+    case ParamType::kDurationS: return numberText(static_cast<double>(*static_cast<const TimeUs*>(p.target)) / 1e6);
+  }
+  return "?";
+}
+
 // A Markdown table cell: a '|' of the text (the choices "zstd|lz4|none") would end the cell.
 std::string markdownCell(const std::string& text) {
   std::string out;
@@ -212,8 +237,9 @@ std::string describeParams(const std::vector<ParamSpecView>& params) {
   s << "| key | type | unit | default | allowed | meaning |\n|---|---|---|---|---|---|\n";
   for (const auto& p : params) {
     static const char* kTypes[] = {"bool", "int", "double", "string", "choice", "vec3", "rotation", "duration"};
+    const std::string default_text = p.default_text != nullptr ? p.default_text : valueText(p);
     s << "| `" << p.key << "` | " << kTypes[static_cast<int>(p.type)] << " | " << p.unit << " | `"
-      << p.default_text << "` | " << markdownCell(rangeText(p)) << " | " << markdownCell(p.doc) << " |\n";
+      << default_text << "` | " << markdownCell(rangeText(p)) << " | " << markdownCell(p.doc) << " |\n";
   }
   return s.str();
 }

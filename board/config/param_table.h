@@ -1,8 +1,11 @@
 #pragma once
 #include <array>
 #include <cstddef>
+#include <span>
 #include <string>
 #include <vector>
+
+#include "base/param_decl.h"
 
 namespace YAML {
 class Node;
@@ -12,11 +15,9 @@ namespace deepnav {
 
 // A parameter is declared exactly once, in a table: key, type, unit, default, range, meaning.
 // Loading a YAML file walks the table, so defaults, validation and documentation cannot drift apart.
-// kVec3 lands in an Eigen::Vector3d; kRotation is written [roll, pitch, yaw] in degrees (ZYX, as a
-// mounting rotation is measured) and lands in an Eigen::Quaterniond; kDurationS is written in seconds
-// and lands in a TimeUs (int64 microseconds).
-enum class ParamType { kBool, kInt, kDouble, kString, kChoice, kVec3, kRotation, kDurationS };
-
+// ParamType (base/param_decl.h) says how a value is written and where it lands. A module's own keys are
+// declared next to its config struct (ParamDecl, e.g. nav/ekf/ekf_config.cpp) and joined to a file's
+// table with appendModuleParams.
 template <typename Config>
 struct ParamSpec {
   const char* key;          // dotted path in the YAML file, e.g. "loop.rate_hz"
@@ -24,7 +25,7 @@ struct ParamSpec {
   const char* unit;         // "Hz", "m", "-" ...
   double min;               // inclusive range for kInt/kDouble/kVec3 (each element)
   double max;
-  const char* default_text; // default as YAML text ("100", "zstd", "[0, 0, 0]")
+  const char* default_text; // default as YAML text ("100", "zstd", "[0, 0, 0]"); nullptr: the field's initialiser
   const char* choices;      // kChoice: allowed values separated by '|'
   const char* doc;          // what it means
   void* (*field)(Config&);  // where the value lands (see ParamType)
@@ -32,12 +33,12 @@ struct ParamSpec {
 
 // Type-erased walkers, implemented once in param_table.cpp.
 struct ParamSpecView {
-  const char* key;
+  std::string key;
   ParamType type;
   const char* unit;
   double min;
   double max;
-  const char* default_text;
+  const char* default_text;  // nullptr: the value the target holds before loading (a module's initialiser)
   const char* choices;
   const char* doc;
   void* target;
@@ -62,6 +63,17 @@ std::vector<ParamSpecView> bindParams(const std::array<ParamSpec<Config>, N>& ta
     views.push_back({p.key, p.type, p.unit, p.min, p.max, p.default_text, p.choices, p.doc, p.field(config)});
   }
   return views;
+}
+
+// Joins a module's declared keys (ParamDecl) to a table, below `section` ("ekf" for "ekf.gravity_mps2"),
+// bound to the module's config inside the file's config. Their defaults are the config's initialisers.
+template <typename Module>
+void appendModuleParams(std::span<const ParamDecl<Module>> decls, const char* section, Module& module,
+                        std::vector<ParamSpecView>* views) {
+  for (const auto& d : decls) {
+    views->push_back({std::string(section) + "." + d.key, d.type, d.unit, d.min, d.max, nullptr, d.choices, d.doc,
+                      d.field(module)});
+  }
 }
 
 }  // namespace deepnav

@@ -4,7 +4,7 @@
 
 namespace deepnav {
 
-// The recorder's options as the board sets them (recording.* and camera.*).
+// The recorder's options as the board sets them: recording.* as held, the image size from camera.*.
 RecordingOptions recordingOptions(const BoardConfig& config);
 
 }  // namespace deepnav

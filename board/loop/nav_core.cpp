@@ -4,29 +4,6 @@
 
 namespace deepnav {
 
-namespace {
-
-PanelPoseConfig panelPoseConfig(const BoardConfig& c) {
-  PanelPoseConfig p;
-  p.min_observations = c.markers.panel_min_observations;
-  p.min_distinct_markers = c.markers.panel_min_distinct_markers;
-  p.max_position_std_m = c.markers.panel_max_position_std_m;
-  p.max_angle_std_rad = c.markers.panel_max_angle_std_rad;
-  p.max_distance_m = c.markers.max_distance_m;
-  return p;
-}
-
-MarkerCovarianceConfig markerCovarianceConfig(const BoardConfig& c) {
-  MarkerCovarianceConfig m;
-  m.pos_floor_m = c.markers.pos_floor_m;
-  m.pos_per_d2_per_m = c.markers.pos_per_d2_per_m;
-  m.rot_floor_rad = c.markers.rot_floor_rad;
-  m.rot_per_d_rad_per_m = c.markers.rot_per_d_rad_per_m;
-  return m;
-}
-
-}  // namespace
-
 bool NavCore::init(const VehicleSetup& setup, RecordSink* sink, std::string* error) {
   sink_ = sink;
   counters_ = InputCounters{};
@@ -50,13 +27,9 @@ bool NavCore::init(const VehicleSetup& setup, RecordSink* sink, std::string* err
   }
   vo_.init(robotFromCamera(setup), c.ekf.max_clones - (panel_in_filter ? 1 : 0));
   smoother_.init(c.loop.output_tau_s);
-  StageConfig stage;
-  stage.min_workspace_time_s = c.stage.min_workspace_time_s;
-  stage.min_faces_seen_fraction = c.stage.min_faces_seen_fraction;
-  stage.stage2_without_panel = c.stage.stage2_without_panel;
-  if (!stage_.init(stage, error) || !ekf_.init(c.ekf, error)) return false;
+  if (!stage_.init(c.stage.machine, error) || !ekf_.init(c.ekf, error)) return false;
   if (!has_panel_) return true;
-  if (!markers_.init(setup.panel, robotFromCamera(setup), panelPoseConfig(c), markerCovarianceConfig(c), error)) {
+  if (!markers_.init(setup.panel, robotFromCamera(setup), c.markers.panel_pose, c.markers.covariance, error)) {
     return false;
   }
   markers_.holdPanelInFilter(panel_in_filter);

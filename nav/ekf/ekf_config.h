@@ -1,19 +1,23 @@
 #pragma once
 #include <cstdint>
+#include <span>
 #include <string>
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "base/param_decl.h"
 #include "nav/types/time.h"
 
 namespace deepnav {
 
 // Every parameter of the error-state EKF, with its unit in its name and its default here (the one place
-// it is declared). Frames: odometry O is ENU (z up), robot R is FLU. validateEkfConfig() checks ranges.
+// it is declared). Frames: odometry O is ENU (z up), robot R is FLU. The fields a board sets are declared
+// with key, unit and range in ekfParams() (ekf_config.cpp); validateEkfConfig() checks those ranges and
+// the rules between fields.
 struct EkfConfig {
   // --- Physics --------------------------------------------------------------------------------------
-  double gravity_mps2 = 9.80665;  // magnitude of gravity along -z of odom, (0, 20]
+  double gravity_mps2 = 9.80665;  // magnitude of gravity along -z of odom
 
   // --- Mounting (board geometry) ----------------------------------------------------------------------
   Eigen::Quaterniond q_robot_imu = Eigen::Quaterniond::Identity();  // rotation IMU -> robot
@@ -23,10 +27,10 @@ struct EkfConfig {
   Eigen::Vector3d p_depth_in_robot_m = Eigen::Vector3d::Zero();     // pressure port, robot frame
 
   // --- IMU noise (continuous-time densities) ------------------------------------------------------------
-  double gyro_arw_radps_rthz = 1.0e-4;        // angle random walk, rad/s/sqrt(Hz), > 0
-  double accel_vrw_mps2_rthz = 1.0e-3;        // velocity random walk, m/s^2/sqrt(Hz), > 0
-  double gyro_bias_rw_radps2_rthz = 1.0e-5;   // gyro bias random walk, rad/s^2/sqrt(Hz), >= 0
-  double accel_bias_rw_mps3_rthz = 1.0e-4;    // accel bias random walk, m/s^3/sqrt(Hz), >= 0
+  double gyro_arw_radps_rthz = 1.0e-4;        // angle random walk, rad/s/sqrt(Hz)
+  double accel_vrw_mps2_rthz = 1.0e-3;        // velocity random walk, m/s^2/sqrt(Hz)
+  double gyro_bias_rw_radps2_rthz = 1.0e-5;   // gyro bias random walk, rad/s^2/sqrt(Hz)
+  double accel_bias_rw_mps3_rthz = 1.0e-4;    // accel bias random walk, m/s^3/sqrt(Hz)
 
   // --- IMU input sanity -----------------------------------------------------------------------------
   double imu_max_rate_radps = 35.0;     // |w| above this is bad input (2000 deg/s)
@@ -65,14 +69,14 @@ struct EkfConfig {
 
   // --- Magnetic disturbance (mag_disturbance.h): off by default --------------------------------------
   bool mag_disturbance_enabled = false;
-  double mag_disturbance_tau_s = 3.0;          // low-pass time constant of the normalised innovation, (0, 600]
+  double mag_disturbance_tau_s = 3.0;          // low-pass time constant of the normalised innovation
   double mag_disturbance_suspect_sigma = 1.0;  // |mean| above: compass de-weighted (R x r_scale)
   double mag_disturbance_enter_sigma = 2.0;    // |mean| above: compass refused; >= suspect
   double mag_disturbance_exit_sigma = 0.5;     // |mean| below this for exit_hold: clean again; < suspect
   TimeUs mag_disturbance_exit_hold_us = 3'000'000;
-  double mag_disturbance_r_scale = 25.0;       // compass variance factor while suspect, >= 1
-  double mag_disturbance_yaw_held_ratio = 1.0; // judged only while H P H^T < this x R (yaw held), > 0
-  TimeUs mag_disturbance_aided_window_us = 2'000'000;  // ... and a marker pose was fused this recently, > 0
+  double mag_disturbance_r_scale = 25.0;       // compass variance factor while suspect
+  double mag_disturbance_yaw_held_ratio = 1.0; // judged only while H P H^T < this x R (yaw held)
+  TimeUs mag_disturbance_aided_window_us = 2'000'000;  // ... and a marker pose was fused this recently
 
   // --- Systematic error states (systematic_states.h): a prior 1-sigma of 0 leaves the state out -------
   double dvl_scale_prior_sigma = 0.0;              // DVL scale factor s (v_meas = (1 + s) v), fraction
@@ -85,7 +89,7 @@ struct EkfConfig {
   double heading_sigma_floor_rad = 0.0;
 
   // --- IMU biases as first-order Gauss-Markov processes (bias_gauss_markov.h); tau 0: random walk only ---
-  double gyro_bias_gm_tau_s = 0.0;         // correlation time T_c, s, 0 or [1, 1e6]
+  double gyro_bias_gm_tau_s = 0.0;         // correlation time T_c, s, 0 (off) or >= 1
   double gyro_bias_gm_sigma_radps = 0.0;   // steady-state 1-sigma (bias instability / 0.6174)
   double accel_bias_gm_tau_s = 0.0;
   double accel_bias_gm_sigma_mps2 = 0.0;
@@ -138,7 +142,7 @@ struct EkfConfig {
   int max_clones = 4;                  // [1, es::kMaxClones]
 
   // --- Initial alignment ----------------------------------------------------------------------------
-  int align_imu_samples = 20;          // IMU samples averaged for roll/pitch from gravity, >= 1
+  int align_imu_samples = 20;          // IMU samples averaged for roll/pitch from gravity
   // A vehicle with no compass and no depth sensor (a MAV dataset): align from the IMU alone, yaw 0 and
   // z 0 at the start unless a compass or depth sample came first. Off: alignment waits for both.
   bool align_imu_only = false;
@@ -147,7 +151,12 @@ struct EkfConfig {
   bool align_gyro_bias_at_rest = false;
 };
 
-// Checks every field; on failure writes a message naming the key and returns false.
+// The board keys of the filter (section kEkfSection of a board file): key, unit, range and meaning of each
+// field a board sets, declared once; the defaults are the initialisers above.
+inline constexpr const char* kEkfSection = "ekf";
+std::span<const ParamDecl<EkfConfig>> ekfParams();
+
+// Checks every field; on failure writes a message naming the field (and its board key) and returns false.
 bool validateEkfConfig(const EkfConfig& config, std::string* error);
 
 }  // namespace deepnav

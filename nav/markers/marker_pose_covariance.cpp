@@ -1,10 +1,28 @@
 #include "nav/markers/marker_pose_covariance.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace deepnav {
 namespace {
+
+using D = ParamDecl<MarkerCovarianceConfig>;
+
+const std::array kMarkerCovarianceParams = {
+    D{"pos_floor_m", ParamType::kDouble, "m", 0, 1, "",
+      "marker pose position 1-sigma at zero distance",
+      DEEPNAV_PARAM_FIELD(MarkerCovarianceConfig, pos_floor_m)},
+    D{"pos_per_d2_per_m", ParamType::kDouble, "1/m", 0, 1, "",
+      "growth of the position 1-sigma with the squared distance",
+      DEEPNAV_PARAM_FIELD(MarkerCovarianceConfig, pos_per_d2_per_m)},
+    D{"rot_floor_rad", ParamType::kDouble, "rad", 0, 1, "",
+      "marker pose rotation 1-sigma at zero distance",
+      DEEPNAV_PARAM_FIELD(MarkerCovarianceConfig, rot_floor_rad)},
+    D{"rot_per_d_rad_per_m", ParamType::kDouble, "rad/m", 0, 1, "",
+      "growth of the rotation 1-sigma with distance",
+      DEEPNAV_PARAM_FIELD(MarkerCovarianceConfig, rot_per_d_rad_per_m)},
+};
 
 bool fail(std::string* error, const char* message) {
   if (error) *error = message;
@@ -13,11 +31,10 @@ bool fail(std::string* error, const char* message) {
 
 }  // namespace
 
+std::span<const ParamDecl<MarkerCovarianceConfig>> markerCovarianceParams() { return kMarkerCovarianceParams; }
+
 bool validateMarkerCovarianceConfig(const MarkerCovarianceConfig& c, std::string* error) {
-  if (!(c.pos_floor_m >= 0.0)) return fail(error, "pos_floor_m: must be >= 0");
-  if (!(c.pos_per_d2_per_m >= 0.0)) return fail(error, "pos_per_d2_per_m: must be >= 0");
-  if (!(c.rot_floor_rad >= 0.0)) return fail(error, "rot_floor_rad: must be >= 0");
-  if (!(c.rot_per_d_rad_per_m >= 0.0)) return fail(error, "rot_per_d_rad_per_m: must be >= 0");
+  if (!checkParamRanges(markerCovarianceParams(), c, "MarkerCovarianceConfig", "markers", error)) return false;
   if (!(c.pos_floor_m + c.pos_per_d2_per_m > 0.0) ||
       !(c.rot_floor_rad + c.rot_per_d_rad_per_m > 0.0)) {
     return fail(error, "pos_floor_m/rot_floor_rad: a zero model would give a zero covariance");

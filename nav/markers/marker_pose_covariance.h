@@ -1,7 +1,9 @@
 #pragma once
+#include <span>
 #include <string>
 
 #include "base/marker_observation.h"
+#include "base/param_decl.h"
 
 namespace deepnav {
 
@@ -25,14 +27,18 @@ namespace deepnav {
 // 1.5 m head-on. Each sigma is isotropic (the same on every axis), so the diagonal covariance it
 // makes is the same in every frame: no rotation to the odom axes is needed.
 struct MarkerCovarianceConfig {
-  double pos_floor_m = 0.01;             // >= 0
-  double pos_per_d2_per_m = 0.01;        // coefficient of d^2 in (2), 1/m, >= 0
-  double rot_floor_rad = 0.0087;         // 0.5 deg, >= 0
-  double rot_per_d_rad_per_m = 0.0087;   // coefficient of d in (3), rad/m (0.5 deg per m), >= 0
+  double pos_floor_m = 0.01;
+  double pos_per_d2_per_m = 0.01;        // coefficient of d^2 in (2), 1/m
+  double rot_floor_rad = 0.0087;         // 0.5 deg
+  double rot_per_d_rad_per_m = 0.0087;   // coefficient of d in (3), rad/m (0.5 deg per m)
   double nominal_reprojection_px = 0.5;  // RMS corner error expected of a good detection, > 0
   double max_obliqueness_rad = 1.309;    // 75 deg: clamp of a in 1 / cos(a), [0, 1.5]
   double ambiguous_scale = 3.0;          // sigma factor for an ambiguous pose, >= 1
 };
+
+// The board keys of the model (section "markers" of a board file): unit, range and meaning of the fields a
+// board sets, declared once; the defaults are the initialisers above.
+std::span<const ParamDecl<MarkerCovarianceConfig>> markerCovarianceParams();
 
 bool validateMarkerCovarianceConfig(const MarkerCovarianceConfig& config, std::string* error);
 

@@ -1,5 +1,8 @@
 #pragma once
+#include <span>
 #include <string>
+
+#include "base/param_decl.h"
 
 namespace deepnav {
 
@@ -9,13 +12,13 @@ namespace deepnav {
 // many.
 struct PanelPoseConfig {
   // --- When the panel is fixed (all must hold) ---
-  int min_observations = 30;         // accepted observations, [1, 100000]
-  int min_distinct_markers = 2;      // distinct marker ids among them, [1, 4096]
-  double max_position_std_m = 0.05;  // sqrt of the largest eigenvalue of the position scatter, > 0
-  double max_angle_std_rad = 0.035;  // (2 deg) the same for the rotation scatter (odom axes), > 0
+  int min_observations = 30;         // accepted observations
+  int min_distinct_markers = 2;      // distinct marker ids among them
+  double max_position_std_m = 0.05;  // sqrt of the largest eigenvalue of the position scatter
+  double max_angle_std_rad = 0.035;  // (2 deg) the same for the rotation scatter (odom axes)
 
   // --- Which observations are used ---
-  double max_distance_m = 4.0;        // camera-marker distance, > 0
+  double max_distance_m = 4.0;        // camera-marker distance
   double max_obliqueness_rad = 1.22;  // (70 deg) marker normal vs ray to the camera, (0, pi/2]
   double max_reprojection_px = 2.0;   // RMS corner error of the pose, > 0
   // An ambiguous pose takes the IPPE solution closer in rotation to the running mean (and is
@@ -33,6 +36,11 @@ struct PanelPoseConfig {
   // observation.
   int restart_after_rejections = 20;  // [1, 100000]
 };
+
+// The board keys of the estimator (section kMarkersSection of a board file): unit, range and meaning of
+// the fields a board sets, declared once; the defaults are the initialisers above.
+inline constexpr const char* kMarkersSection = "markers";
+std::span<const ParamDecl<PanelPoseConfig>> panelPoseParams();
 
 // False with a message naming the key when a field is out of range.
 bool validatePanelPoseConfig(const PanelPoseConfig& config, std::string* error);

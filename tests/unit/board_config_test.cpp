@@ -24,7 +24,7 @@ TEST(BoardConfig, EmptyFileGivesDeclaredDefaults) {
   EXPECT_EQ(c.loop.rate_hz, 100);
   EXPECT_EQ(c.camera.width_px, 688);
   EXPECT_EQ(c.camera.height_px, 516);
-  EXPECT_EQ(c.recording.compression, "zstd");
+  EXPECT_EQ(c.recording.options.compression, "zstd");
   EXPECT_TRUE(c.recording.enabled);
 }
 
@@ -34,7 +34,7 @@ TEST(BoardConfig, ValuesOverrideDefaults) {
   std::string error;
   ASSERT_TRUE(loadBoardConfig(path, &c, &error)) << error;
   EXPECT_EQ(c.loop.rate_hz, 200);
-  EXPECT_EQ(c.recording.compression, "lz4");
+  EXPECT_EQ(c.recording.options.compression, "lz4");
 }
 
 struct BadCase {
@@ -75,7 +75,7 @@ TEST(BoardConfig, MissingFileIsAnError) {
 TEST(BoardConfig, DeclaredDefaultsAreAllValid) {
   std::string error;
   EXPECT_TRUE(checkBoardDefaults(&error)) << error;
-  EXPECT_GT(defaultBoardConfig().markers.pos_floor_m, 0.0);  // a default after the (empty) panel_file
+  EXPECT_GT(defaultBoardConfig().markers.covariance.pos_floor_m, 0.0);  // a default after the (empty) panel_file
 }
 
 TEST(BoardConfig, EveryParameterIsDocumented) {

@@ -1,0 +1,131 @@
+// A module's keys are declared once, next to its config struct (ParamDecl): the board reads its files
+// through that declaration into the module's own struct, and the module validates against the same
+// range, so a value the board refuses is one the module refuses too (and the reverse).
+#include "board/config/board_config.h"
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace deepnav {
+namespace {
+
+std::string numberText(double v) {
+  std::ostringstream s;
+  s.precision(17);
+  s << v;
+  return s.str();
+}
+
+// Values just outside [min, max], written as a board file writes them.
+std::vector<std::string> outsideValues(ParamType type, double min, double max) {
+  const double step = type == ParamType::kInt ? 1.0 : 0.01 * std::max(1.0, std::abs(max - min));
+  std::vector<std::string> out;
+  for (double v : {min - step, max + step}) {
+    out.push_back(type == ParamType::kVec3 ? "[0, 0, " + numberText(v) + "]" : numberText(v));
+  }
+  return out;
+}
+
+// Sets the field a declaration lands in from the same number (seconds for a duration).
+template <typename Config>
+void setField(const ParamDecl<Config>& d, Config* c, double v) {
+  void* target = d.field(*c);
+  switch (d.type) {
+    case ParamType::kInt: *static_cast<int*>(target) = static_cast<int>(v); break;
+    case ParamType::kDouble: *static_cast<double*>(target) = v; break;
+    case ParamType::kDurationS: *static_cast<TimeUs*>(target) = sToUs(v); break;
+    case ParamType::kVec3: *static_cast<Eigen::Vector3d*>(target) = Eigen::Vector3d(0.0, 0.0, v); break;
+    default: break;
+  }
+}
+
+template <typename Config>
+void expectOneRange(std::span<const ParamDecl<Config>> decls, const char* section,
+                    bool (*validate)(const Config&, std::string*)) {
+  for (const auto& d : decls) {
+    if (d.type != ParamType::kInt && d.type != ParamType::kDouble && d.type != ParamType::kDurationS &&
+        d.type != ParamType::kVec3) {
+      continue;
+    }
+    const std::string key = std::string(section) + "." + d.key;
+    for (const std::string& v : outsideValues(d.type, d.min, d.max)) {
+      // WHEN the board file sets the key outside its range THEN the board refuses it, naming the key
+      BoardConfig board{};
+      std::string error;
+      const std::string yaml = std::string(section) + ":\n  " + d.key + ": " + v + "\n";
+      EXPECT_FALSE(loadBoardConfigText(yaml, "board.yaml", &board, &error)) << yaml;
+      EXPECT_NE(error.find("'" + key + "'"), std::string::npos) << error;
+      // AND the module, given the same value directly, refuses it too, naming its field and the key
+      Config c{};
+      const double number = d.type == ParamType::kVec3 ? std::stod(v.substr(7)) : std::stod(v);
+      setField(d, &c, number);
+      error.clear();
+      EXPECT_FALSE(validate(c, &error)) << key << " = " << v;
+      EXPECT_NE(error.find(d.member), std::string::npos) << error;
+      EXPECT_NE(error.find(key), std::string::npos) << error;
+    }
+  }
+}
+
+TEST(BoardModuleParams, TheBoardAndTheModuleRefuseTheSameValues) {
+  expectOneRange<EkfConfig>(ekfParams(), kEkfSection, validateEkfConfig);
+  expectOneRange<StageConfig>(stageParams(), kStageSection, validateStageConfig);
+  expectOneRange<PanelPoseConfig>(panelPoseParams(), kMarkersSection, validatePanelPoseConfig);
+  expectOneRange<MarkerCovarianceConfig>(markerCovarianceParams(), kMarkersSection, validateMarkerCovarianceConfig);
+}
+
+TEST(BoardModuleParams, GravityHasTheBoardsRangeInTheFilterToo) {
+  // GIVEN a filter config with a gravity the board never accepted (the filter once took (0, 20])
+  EkfConfig c;
+  c.gravity_mps2 = 15.0;
+  std::string error;
+  // THEN the filter refuses it with the board's range
+  EXPECT_FALSE(validateEkfConfig(c, &error));
+  EXPECT_EQ(error, "EkfConfig.gravity_mps2 (ekf.gravity_mps2): must be a number in [9.7, 9.9] (m/s^2)");
+}
+
+TEST(BoardModuleParams, KeysLandInTheModuleConfigsTheModulesRead) {
+  const std::string yaml =
+      "markers:\n  panel_min_observations: 7\n  max_distance_m: 3.5\n  rot_floor_rad: 0.02\n"
+      "stage:\n  min_workspace_time_s: 12\n  stage2_without_panel: true\n"
+      "ekf:\n  gravity_mps2: 9.81\n  timeout_dvl_s: 0.25\n";
+  BoardConfig c{};
+  std::string error;
+  ASSERT_TRUE(loadBoardConfigText(yaml, "board.yaml", &c, &error)) << error;
+  EXPECT_EQ(c.markers.panel_pose.min_observations, 7);
+  EXPECT_EQ(c.markers.panel_pose.max_distance_m, 3.5);
+  EXPECT_EQ(c.markers.covariance.rot_floor_rad, 0.02);
+  EXPECT_EQ(c.stage.machine.min_workspace_time_s, 12.0);
+  EXPECT_TRUE(c.stage.machine.stage2_without_panel);
+  EXPECT_EQ(c.ekf.gravity_mps2, 9.81);
+  EXPECT_EQ(c.ekf.timeout_dvl_us, 250000);
+}
+
+TEST(BoardModuleParams, DefaultsAreTheModulesInitialisersBarTheBoardsOwn) {
+  const BoardConfig c = defaultBoardConfig();
+  const EkfConfig ekf;
+  EXPECT_EQ(c.ekf.gravity_mps2, ekf.gravity_mps2);
+  EXPECT_EQ(c.ekf.gyro_arw_radps_rthz, ekf.gyro_arw_radps_rthz);
+  EXPECT_EQ(c.ekf.timeout_imu_us, ekf.timeout_imu_us);
+  EXPECT_EQ(c.ekf.q_robot_dvl.coeffs(), ekf.q_robot_dvl.coeffs());
+  EXPECT_EQ(c.stage.machine.min_workspace_time_s, StageConfig{}.min_workspace_time_s);
+  EXPECT_EQ(c.markers.panel_pose.min_observations, PanelPoseConfig{}.min_observations);
+  EXPECT_EQ(c.markers.covariance.pos_floor_m, MarkerCovarianceConfig{}.pos_floor_m);
+  // The one board default that differs from the bare filter's: a vehicle's IMU noise never repeats.
+  EXPECT_EQ(ekf.imu_stuck_after_samples, 0);
+  EXPECT_EQ(c.ekf.imu_stuck_after_samples, 10);
+  const std::string table = describeBoardParams();
+  EXPECT_NE(table.find("| `ekf.imu_stuck_after_samples` | int | samples | `10` |"), std::string::npos);
+  EXPECT_NE(table.find("| `ekf.gravity_mps2` | double | m/s^2 | `9.80665` | a number in [9.7, 9.9] |"),
+            std::string::npos);
+  EXPECT_NE(table.find("| `ekf.dvl_rotation_deg` | rotation | deg | `[0, 0, 0]` |"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace deepnav
