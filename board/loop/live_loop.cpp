@@ -94,29 +94,26 @@ void LiveLoop::publish(const NavSolution& s) {
 }
 
 // Consumes the oldest queued sample not newer than t_us (rings are each in time order, so a k-way merge
-// of their fronts keeps the inputs in time order). False when nothing is due.
+// of their fronts keeps the inputs in time order; a tie goes to the earlier ring of forEachSensorRing).
+// False when nothing is due.
 bool LiveLoop::consumeOldest(TimeUs t_us) {
   TimeUs best = t_us + 1;
-  int which = -1;
-  auto consider = [&](auto& ring, int id) {
+  int which = -1, position = 0;
+  inputs_.forEachSensorRing([&](const auto& ring) {
     if (const auto* f = ring.front(); f && f->t_us < best) {
       best = f->t_us;
-      which = id;
+      which = position;
     }
-  };
-  consider(inputs_.imu, 0);
-  consider(inputs_.dvl, 1);
-  consider(inputs_.heading, 2);
-  consider(inputs_.attitude, 3);
-  consider(inputs_.depth, 4);
-  switch (which) {
-    case 0: core_.consume(*inputs_.imu.front()); inputs_.imu.pop(); return true;
-    case 1: core_.consume(*inputs_.dvl.front()); inputs_.dvl.pop(); return true;
-    case 2: core_.consume(*inputs_.heading.front()); inputs_.heading.pop(); return true;
-    case 3: core_.consume(*inputs_.attitude.front()); inputs_.attitude.pop(); return true;
-    case 4: core_.consume(*inputs_.depth.front()); inputs_.depth.pop(); return true;
-    default: return false;
-  }
+    ++position;
+  });
+  if (which < 0) return false;
+  position = 0;
+  inputs_.forEachSensorRing([&](auto& ring) {
+    if (position++ != which) return;
+    core_.consume(*ring.front());
+    ring.pop();
+  });
+  return true;
 }
 
 void LiveLoop::runTick(TimeUs t_us) {
@@ -132,8 +129,9 @@ void LiveLoop::runTick(TimeUs t_us) {
 }
 
 std::uint64_t LiveLoop::inputsRefused() const {
-  return inputs_.imu.dropped() + inputs_.dvl.dropped() + inputs_.heading.dropped() + inputs_.attitude.dropped() +
-         inputs_.depth.dropped() + inputs_.frames.dropped();
+  std::uint64_t refused = inputs_.frames.dropped();
+  inputs_.forEachSensorRing([&refused](const auto& ring) { refused += ring.dropped(); });
+  return refused;
 }
 
 void LiveLoop::loopThread() {

@@ -1,5 +1,6 @@
 #include "board/loop/nav_core.h"
 
+#include "base/overloaded.h"
 #include "nav/ekf/systematic_states.h"
 
 namespace deepnav {
@@ -60,33 +61,31 @@ void NavCore::consumeVision(const VisionResult& v) {
   vo_.onVision(v, stage2, &ekf_);
 }
 
+// Every kind is named: a new sample kind does not compile until it is routed here.
 void NavCore::consume(const InputSample& sample) {
   if (sink_) sink_->recordInput(sample);
-  switch (sample.index()) {
-    case 0:
-      ++counters_.imu;
-      ekf_.setImu(std::get<ImuSample>(sample));
-      break;
-    case 1:
-      ++counters_.dvl;
-      count(ekf_.fuseDvl(std::get<DvlSample>(sample)));
-      break;
-    case 2:
-      ++counters_.heading;
-      count(ekf_.fuseHeading(std::get<HeadingSample>(sample)));
-      break;
-    case 3:
-      ++counters_.attitude;
-      count(ekf_.fuseAttitude(std::get<AttitudeSample>(sample)));
-      break;
-    case 4:
-      ++counters_.depth;
-      count(ekf_.fuseDepth(std::get<DepthSample>(sample)));
-      break;
-    default:
-      consumeVision(std::get<VisionResult>(sample));
-      break;
-  }
+  std::visit(Overloaded{[this](const ImuSample& s) {
+                          ++counters_.imu;
+                          ekf_.setImu(s);
+                        },
+                        [this](const DvlSample& s) {
+                          ++counters_.dvl;
+                          count(ekf_.fuseDvl(s));
+                        },
+                        [this](const HeadingSample& s) {
+                          ++counters_.heading;
+                          count(ekf_.fuseHeading(s));
+                        },
+                        [this](const AttitudeSample& s) {
+                          ++counters_.attitude;
+                          count(ekf_.fuseAttitude(s));
+                        },
+                        [this](const DepthSample& s) {
+                          ++counters_.depth;
+                          count(ekf_.fuseDepth(s));
+                        },
+                        [this](const VisionResult& v) { consumeVision(v); }},
+             sample);
 }
 
 // The sensor-error estimates once a second, when the board estimates any systematic state.

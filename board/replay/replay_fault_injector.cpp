@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "base/overloaded.h"
 #include "base/so3.h"
 
 namespace deepnav {
@@ -15,15 +16,30 @@ constexpr double kHugeSigma = 1e150;
 // Accepted measurements of the sources a sample feeds, from the filter's own (revisable) counters; of a
 // vision result, those of the part the fault altered (markers or VO).
 std::uint32_t acceptedOf(const NavCore& core, const InputSample& sample, InjectedFault kind) {
-  auto acc = [&core](NavSource s) { return core.ekf().health(s).counters.accepted; };
-  switch (sample.index()) {
-    case 1: return acc(kSrcDvl);
-    case 2: return acc(kSrcHeading);
-    case 3: return acc(kSrcAttitude);
-    case 4: return acc(kSrcDepth);
-    case 5: return kind == InjectedFault::kMarkerOutlier ? acc(kSrcMarkers) : acc(kSrcVoOrb) + acc(kSrcVoPlanes);
-    default: return 0;
-  }
+  auto acc = [&core](NavSource s) -> std::uint32_t { return core.ekf().health(s).counters.accepted; };
+  return std::visit(Overloaded{[](const ImuSample&) -> std::uint32_t { return 0; },
+                               [&](const DvlSample&) { return acc(kSrcDvl); },
+                               [&](const HeadingSample&) { return acc(kSrcHeading); },
+                               [&](const AttitudeSample&) { return acc(kSrcAttitude); },
+                               [&](const DepthSample&) { return acc(kSrcDepth); },
+                               [&](const VisionResult&) {
+                                 return kind == InjectedFault::kMarkerOutlier ? acc(kSrcMarkers)
+                                                                              : acc(kSrcVoOrb) + acc(kSrcVoPlanes);
+                               }},
+                    sample);
+}
+
+// The values of a navigation-sensor sample the fault suite compares (InputRecord::value).
+Eigen::Vector3d recordedValue(const InputSample& sample) {
+  Eigen::Vector3d v = Eigen::Vector3d::Zero();
+  std::visit(Overloaded{[](const ImuSample&) {},
+                        [&v](const DvlSample& m) { v = m.v_dvl_mps; },
+                        [&v](const HeadingSample& m) { v.x() = m.heading_rad; },
+                        [&v](const AttitudeSample& m) { v.head<2>() << m.roll_rad, m.pitch_rad; },
+                        [&v](const DepthSample& m) { v.x() = m.depth_m; },
+                        [](const VisionResult&) {}},
+             sample);
+  return v;
 }
 
 // A 6x6 or 3x3 "covariance" that is not one.
@@ -87,15 +103,12 @@ void ReplayFaultInjector::consumeCounted(const InputSample& sample, NavCore* cor
 }
 
 void ReplayFaultInjector::consumeRecorded(const InputSample& sample, NavCore* core) {
-  const int kind = static_cast<int>(sample.index());
-  if (kind == 0 || kind == 5) return core->consume(sample);
+  const InputKind kind = inputKind(sample);
+  if (kind == InputKind::kImu || kind == InputKind::kVision) return core->consume(sample);
   InputRecord r;
   r.kind = kind;
   r.t_us = sampleTimeUs(sample);
-  if (const auto* m = std::get_if<DvlSample>(&sample)) r.value = m->v_dvl_mps;
-  if (const auto* m = std::get_if<HeadingSample>(&sample)) r.value.x() = m->heading_rad;
-  if (const auto* m = std::get_if<AttitudeSample>(&sample)) r.value.head<2>() << m->roll_rad, m->pitch_rad;
-  if (const auto* m = std::get_if<DepthSample>(&sample)) r.value.x() = m->depth_m;
+  r.value = recordedValue(sample);
   const std::uint32_t before = acceptedOf(*core, sample, spec_.kind);
   core->consume(sample);
   r.accepted = acceptedOf(*core, sample, spec_.kind) > before;

@@ -59,7 +59,7 @@ struct TickRecord {
 // One navigation-sensor sample as the loop consumed it, and whether the filter accepted it then (a
 // sample newer than the last IMU sample is queued and counts as not accepted here).
 struct InputRecord {
-  int kind = 0;  // InputSample index: 1 DVL, 2 heading, 3 attitude, 4 depth
+  InputKind kind = InputKind::kDvl;  // DVL, heading, attitude or depth
   TimeUs t_us = 0;
   Eigen::Vector3d value = Eigen::Vector3d::Zero();  // DVL velocity; heading; roll, pitch; depth
   bool accepted = false;

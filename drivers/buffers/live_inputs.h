@@ -1,5 +1,6 @@
 #pragma once
 #include <cstddef>
+#include <type_traits>
 
 #include "drivers/buffers/frame_pool.h"
 #include "drivers/buffers/spsc_ring.h"
@@ -26,10 +27,42 @@ struct LiveInputs {
   FramePool pool;
   SpscRing<int> frames;  // filled pool slots, capture order
 
+  // The ring of a sample kind, by type: a kind without a ring does not compile.
+  template <typename T>
+  SpscRing<T>& ring() {
+    if constexpr (std::is_same_v<T, ImuSample>) return imu;
+    else if constexpr (std::is_same_v<T, DvlSample>) return dvl;
+    else if constexpr (std::is_same_v<T, HeadingSample>) return heading;
+    else if constexpr (std::is_same_v<T, AttitudeSample>) return attitude;
+    else if constexpr (std::is_same_v<T, DepthSample>) return depth;
+    else static_assert(!sizeof(T), "LiveInputs: no ring for this sample kind (docs/adding-a-sensor-kind.md)");
+  }
+
+  // Calls f on every sensor ring, in the loop's merge order: of samples with equal stamps, the earlier
+  // ring's is consumed first (the IMU's before the aiding sensors').
+  template <typename F>
+  void forEachSensorRing(F&& f) {
+    forEachRingOf(*this, f);
+  }
+  template <typename F>
+  void forEachSensorRing(F&& f) const {
+    forEachRingOf(*this, f);
+  }
+
   bool allocate(const LiveInputCapacities& c) {
     return imu.allocate(c.imu) && dvl.allocate(c.dvl) && heading.allocate(c.heading) &&
            attitude.allocate(c.attitude) && depth.allocate(c.depth) &&
            pool.allocate(c.frames, c.width_px, c.height_px, c.channels) && frames.allocate(c.frames);
+  }
+
+ private:
+  template <typename Self, typename F>
+  static void forEachRingOf(Self& self, F& f) {
+    f(self.imu);
+    f(self.dvl);
+    f(self.heading);
+    f(self.attitude);
+    f(self.depth);
   }
 };
 

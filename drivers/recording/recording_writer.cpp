@@ -74,7 +74,7 @@ void RecordingWriter::recordInputArrived(const InputSample& sample, TimeUs arriv
   const TimeUs t_us = sampleTimeUs(sample);
   put(inputTopic(sample), arrival_us, t_us, encodeInput(sample, buffer_.data(), buffer_.size()));
   const std::size_t n = encodeInputCompanion(sample, buffer_.data(), buffer_.size());
-  if (n > 0) put(std::holds_alternative<DvlSample>(sample) ? Topic::kDvl : Topic::kPressure, arrival_us, t_us, n);
+  if (n > 0) put(inputCompanionTopic(sample), arrival_us, t_us, n);
 }
 
 void RecordingWriter::recordSolution(const NavSolution& s) {

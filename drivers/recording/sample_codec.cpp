@@ -277,15 +277,32 @@ bool readVision(CdrReader& r, VisionResult* s) {
   return r.u32(&s->orb_us) && r.u32(&s->planes_us) && r.u32(&s->map_us);
 }
 
-struct InputWriter {
-  CdrWriter& w;
-  void operator()(const ImuSample& s) const { writeImu(w, s); }
-  void operator()(const DvlSample& s) const { writeBottomTrack(w, s); }
-  void operator()(const DepthSample& s) const { writeDepth(w, s); }
-  void operator()(const HeadingSample& s) const { writeHeading(w, s); }
-  void operator()(const AttitudeSample& s) const { writeAttitude(w, s); }
-  void operator()(const VisionResult& s) const { writeVision(w, s); }
+// The recording's row of each input kind: the topic it is recorded on (and replayed from), its writer
+// and reader, and its viewer-only companion (DVL twist, pressure) where it has one. Rows are found by
+// type (rowOf), so reordering InputSample changes nothing and a kind without a row does not compile.
+template <typename T>
+struct InputRow {
+  Topic topic;
+  void (*write)(CdrWriter&, const T&);
+  bool (*read)(CdrReader&, T*);
+  Topic companion_topic = Topic::kCount;
+  void (*write_companion)(CdrWriter&, const T&) = nullptr;
 };
+
+constexpr InputRow<ImuSample> rowOf(const ImuSample*) { return {Topic::kImu, writeImu, readImu}; }
+constexpr InputRow<DvlSample> rowOf(const DvlSample*) {
+  return {Topic::kDvlBottomTrack, writeBottomTrack, readBottomTrack, Topic::kDvl, writeDvlTwist};
+}
+constexpr InputRow<HeadingSample> rowOf(const HeadingSample*) { return {Topic::kHeading, writeHeading, readHeading}; }
+constexpr InputRow<AttitudeSample> rowOf(const AttitudeSample*) {
+  return {Topic::kAttitude, writeAttitude, readAttitude};
+}
+constexpr InputRow<DepthSample> rowOf(const DepthSample*) {
+  return {Topic::kDepth, writeDepth, readDepth, Topic::kPressure, writePressure};
+}
+constexpr InputRow<VisionResult> rowOf(const VisionResult*) {
+  return {Topic::kVisionResult, writeVision, readVision};
+}
 
 template <typename T, typename ReadFn>
 bool readAs(CdrReader& r, InputSample* out, ReadFn read) {
@@ -293,6 +310,22 @@ bool readAs(CdrReader& r, InputSample* out, ReadFn read) {
   if (!read(r, &sample) || !r.ok()) return false;
   *out = sample;
   return true;
+}
+
+// Decodes the message as kind T when T is the kind recorded on `topic`; false when it is not.
+template <typename T>
+bool decodeIfRecordedOn(Topic topic, CdrReader& r, InputSample* out, bool* ok) {
+  constexpr InputRow<T> row = rowOf(static_cast<const T*>(nullptr));
+  if (row.topic != topic) return false;
+  *ok = readAs<T>(r, out, row.read);
+  return true;
+}
+
+template <typename... T>
+bool decodeAnyKind(Topic topic, CdrReader& r, InputSample* out, const std::variant<T...>*) {
+  bool ok = false;
+  (decodeIfRecordedOn<T>(topic, r, out, &ok) || ...);
+  return ok;
 }
 
 void writePoseCov(CdrWriter& w, const Eigen::Matrix<double, 6, 6>& cov) {
@@ -303,41 +336,31 @@ void writePoseCov(CdrWriter& w, const Eigen::Matrix<double, 6, 6>& cov) {
 }  // namespace
 
 Topic inputTopic(const InputSample& sample) {
-  switch (sample.index()) {
-    case 0: return Topic::kImu;
-    case 1: return Topic::kDvlBottomTrack;
-    case 2: return Topic::kHeading;
-    case 3: return Topic::kAttitude;
-    case 4: return Topic::kDepth;
-    default: return Topic::kVisionResult;
-  }
+  return std::visit([](const auto& s) { return rowOf(&s).topic; }, sample);
+}
+
+Topic inputCompanionTopic(const InputSample& sample) {
+  return std::visit([](const auto& s) { return rowOf(&s).companion_topic; }, sample);
 }
 
 std::size_t encodeInput(const InputSample& sample, std::uint8_t* out, std::size_t capacity) {
-  return finish(out, capacity, [&](CdrWriter& w) { std::visit(InputWriter{w}, sample); });
+  return finish(out, capacity,
+                [&](CdrWriter& w) { std::visit([&w](const auto& s) { rowOf(&s).write(w, s); }, sample); });
 }
 
 std::size_t encodeInputCompanion(const InputSample& sample, std::uint8_t* out, std::size_t capacity) {
-  if (const auto* dvl = std::get_if<DvlSample>(&sample)) {
-    return finish(out, capacity, [&](CdrWriter& w) { writeDvlTwist(w, *dvl); });
-  }
-  if (const auto* depth = std::get_if<DepthSample>(&sample)) {
-    return finish(out, capacity, [&](CdrWriter& w) { writePressure(w, *depth); });
-  }
-  return 0;
+  return std::visit(
+      [&](const auto& s) -> std::size_t {
+        const auto row = rowOf(&s);
+        if (row.write_companion == nullptr) return 0;
+        return finish(out, capacity, [&](CdrWriter& w) { row.write_companion(w, s); });
+      },
+      sample);
 }
 
 bool decodeInput(Topic topic, const std::uint8_t* data, std::size_t size, InputSample* out) {
   CdrReader r(data, size);
-  switch (topic) {
-    case Topic::kImu: return readAs<ImuSample>(r, out, readImu);
-    case Topic::kDvlBottomTrack: return readAs<DvlSample>(r, out, readBottomTrack);
-    case Topic::kDepth: return readAs<DepthSample>(r, out, readDepth);
-    case Topic::kHeading: return readAs<HeadingSample>(r, out, readHeading);
-    case Topic::kAttitude: return readAs<AttitudeSample>(r, out, readAttitude);
-    case Topic::kVisionResult: return readAs<VisionResult>(r, out, readVision);
-    default: return false;
-  }
+  return decodeAnyKind(topic, r, out, static_cast<const InputSample*>(nullptr));
 }
 
 std::size_t encodeSolution(const NavSolution& s, std::uint8_t* out, std::size_t capacity) {

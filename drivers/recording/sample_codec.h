@@ -23,6 +23,8 @@ Topic inputTopic(const InputSample& sample);
 std::size_t encodeInput(const InputSample& sample, std::uint8_t* out, std::size_t capacity);
 // The viewer-only companion of a DVL or depth sample (/dvl twist, /pressure); 0 for other samples.
 std::size_t encodeInputCompanion(const InputSample& sample, std::uint8_t* out, std::size_t capacity);
+// The topic of that companion; Topic::kCount for a sample without one.
+Topic inputCompanionTopic(const InputSample& sample);
 std::size_t encodeSolution(const NavSolution& s, std::uint8_t* out, std::size_t capacity);
 std::size_t encodeOdometry(const NavSolution& s, std::uint8_t* out, std::size_t capacity);
 std::size_t encodeTruth(const TruthSample& s, std::uint8_t* out, std::size_t capacity);

@@ -1,7 +1,9 @@
 #include "drivers/replay/replay_source.h"
 
 #include <algorithm>
+#include <type_traits>
 
+#include "base/overloaded.h"
 #include "drivers/clock/monotonic_clock.h"
 
 namespace deepnav {
@@ -60,14 +62,9 @@ bool ReplaySource::push(const ReplayEvent& e) {
     return true;
   }
   if (e.kind != ReplayEvent::Kind::kInput) return true;
-  switch (e.input.index()) {
-    case 0: return inputs_->imu.push(std::get<ImuSample>(e.input));
-    case 1: return inputs_->dvl.push(std::get<DvlSample>(e.input));
-    case 2: return inputs_->heading.push(std::get<HeadingSample>(e.input));
-    case 3: return inputs_->attitude.push(std::get<AttitudeSample>(e.input));
-    case 4: return inputs_->depth.push(std::get<DepthSample>(e.input));
-    default: return true;  // recorded vision results: the live vision worker recomputes them
-  }
+  return std::visit(Overloaded{[](const VisionResult&) { return true; },  // the live vision worker recomputes them
+                               [this](const auto& s) { return inputs_->ring<std::decay_t<decltype(s)>>().push(s); }},
+                    e.input);
 }
 
 void ReplaySource::run() {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "base/overloaded.h"
 #include "base/so3.h"
 #include "nav/ekf/attitude_updater.h"
 #include "nav/ekf/bias_gauss_markov.h"
@@ -212,48 +213,61 @@ void Ekf::finishStep(int sym_dim) {
   resetCovariance(config_, &state_);
 }
 
+// The health slot of a payload's source. Every alternative is named: a new payload kind does not compile
+// until it is routed here.
 NavSource Ekf::sourceOf(const MeasurementPayload& p) const {
-  switch (p.index()) {
-    case 0: return kSrcDvl;
-    case 1: return kSrcDepth;
-    case 2: return kSrcHeading;
-    case 3: return kSrcAttitude;
-    case 4: return std::get_if<PoseMeasurement>(&p)->source;
-    case 5: return std::get_if<RelativePoseMeasurement>(&p)->source;
-    default: return kSrcCount;  // clone bookkeeping has no health slot
-  }
+  return std::visit(Overloaded{[](const DvlSample&) { return kSrcDvl; },
+                               [](const DepthSample&) { return kSrcDepth; },
+                               [](const HeadingSample&) { return kSrcHeading; },
+                               [](const AttitudeSample&) { return kSrcAttitude; },
+                               [](const PoseMeasurement& m) { return m.source; },
+                               [](const RelativePoseMeasurement& m) { return m.source; },
+                               // Clone bookkeeping and gate resets have no health slot.
+                               [](const CloneRequest&) { return kSrcCount; },
+                               [](const CloneRelease&) { return kSrcCount; },
+                               [](const GateReset&) { return kSrcCount; }},
+                    p);
 }
 
-UpdateOutcome Ekf::applyPayload(const MeasurementPayload& p) {
-  Linearization lin;
-  if (const auto* m = std::get_if<DvlSample>(&p)) {
-    return linearizeDvl(state_, *m, config_, &lin) ? gateAndUpdate(considerUnaided(&lin), gate_dvl_, &state_)
-                                                   : refused();
-  }
-  if (const auto* m = std::get_if<DepthSample>(&p)) {
-    return linearizeDepth(state_, *m, config_, &lin) ? gateAndUpdate(considerUnaided(&lin), gate_depth_, &state_)
-                                                     : refused();
-  }
-  if (const auto* m = std::get_if<AttitudeSample>(&p)) {
-    return linearizeAttitude(state_, *m, config_, &lin)
-               ? gateAndUpdate(considerUnaided(&lin), gate_attitude_, &state_)
-               : refused();
-  }
-  if (const auto* m = std::get_if<PoseMeasurement>(&p)) {
-    return notePoseFused(m->t_us, linearizePose(state_, *m, &lin) ? gateAndUpdate(lin, gate_pose_, &state_) : refused());
-  }
-  if (const auto* m = std::get_if<RelativePoseMeasurement>(&p)) return applyRelativePose(*m);
-  if (const auto* m = std::get_if<CloneRequest>(&p)) {
-    return {augmentClone(m->id, config_.max_clones, &state_) == CloneStatus::kOk, 0.0};
-  }
-  if (const auto* m = std::get_if<CloneRelease>(&p)) {
-    return {marginaliseClone(m->id, &state_) == CloneStatus::kOk, 0.0};
-  }
-  if (const auto* m = std::get_if<GateReset>(&p)) {
-    resetObservedStates(m->source, config_, &state_);
-    return {true, 0.0};
-  }
-  return refused();
+// One update per payload kind (every alternative named, as in sourceOf).
+UpdateOutcome Ekf::applyPayload(LoggedMeasurement& e) {
+  return std::visit(
+      Overloaded{[&](const DvlSample& m) -> UpdateOutcome {
+                   Linearization lin;
+                   return linearizeDvl(state_, m, config_, &lin)
+                              ? gateAndUpdate(considerUnaided(&lin), gate_dvl_, &state_)
+                              : refused();
+                 },
+                 [&](const DepthSample& m) -> UpdateOutcome {
+                   Linearization lin;
+                   return linearizeDepth(state_, m, config_, &lin)
+                              ? gateAndUpdate(considerUnaided(&lin), gate_depth_, &state_)
+                              : refused();
+                 },
+                 [&](const HeadingSample&) { return applyHeading(e); },
+                 [&](const AttitudeSample& m) -> UpdateOutcome {
+                   Linearization lin;
+                   return linearizeAttitude(state_, m, config_, &lin)
+                              ? gateAndUpdate(considerUnaided(&lin), gate_attitude_, &state_)
+                              : refused();
+                 },
+                 [&](const PoseMeasurement& m) -> UpdateOutcome {
+                   Linearization lin;
+                   return notePoseFused(m.t_us, linearizePose(state_, m, &lin) ? gateAndUpdate(lin, gate_pose_, &state_)
+                                                                               : refused());
+                 },
+                 [&](const RelativePoseMeasurement& m) { return applyRelativePose(m); },
+                 [&](const CloneRequest& m) -> UpdateOutcome {
+                   return {augmentClone(m.id, config_.max_clones, &state_) == CloneStatus::kOk, 0.0};
+                 },
+                 [&](const CloneRelease& m) -> UpdateOutcome {
+                   return {marginaliseClone(m.id, &state_) == CloneStatus::kOk, 0.0};
+                 },
+                 [&](const GateReset& m) -> UpdateOutcome {
+                   resetObservedStates(m.source, config_, &state_);
+                   return {true, 0.0};
+                 }},
+      e.payload);
 }
 
 UpdateOutcome Ekf::applyRelativePose(const RelativePoseMeasurement& m) {
@@ -334,8 +348,7 @@ void Ekf::noteRefusedAtDoor(TimeUs t_us, NavSource src, FusionReason reason) {
 
 void Ekf::applyMeasurement(LoggedMeasurement& e) {
   const FuseStatus previous = e.outcome;
-  const bool heading = std::holds_alternative<HeadingSample>(e.payload);
-  const UpdateOutcome r = heading ? applyHeading(e) : applyPayload(e.payload);
+  const UpdateOutcome r = applyPayload(e);
   finishStep(state_.dim());
   e.outcome = r.accepted ? FuseStatus::kAccepted : FuseStatus::kRejected;
   if (!r.accepted && e.mag_action == MagAction::kRefuse) e.outcome = FuseStatus::kRefused;

@@ -111,7 +111,7 @@ class Ekf {
   void stepImu(const ImuSample& sample, FilterState* snapshot);
   void propagateTo(TimeUs t_us, const RobotImu& u);
   void applyMeasurement(LoggedMeasurement& e);
-  UpdateOutcome applyPayload(const MeasurementPayload& payload);
+  UpdateOutcome applyPayload(LoggedMeasurement& e);
   UpdateOutcome applyRelativePose(const RelativePoseMeasurement& m);
   Linearization& considerUnaided(Linearization* lin) const;
   UpdateOutcome notePoseFused(TimeUs t_us, const UpdateOutcome& out);

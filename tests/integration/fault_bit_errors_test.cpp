@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "base/overloaded.h"
 #include "drivers/parsers/sensor_stream_decoder.h"
 #include "tests/support/fault_replay.h"
 #include "tests/support/sensor_frames.h"
@@ -96,7 +97,7 @@ InputSample withDriverFields(InputSample decoded, const InputSample& original, c
 }
 
 bool sameValues(const InputSample& a, const InputSample& b) {
-  if (a.index() != b.index()) return false;
+  if (inputKind(a) != inputKind(b)) return false;
   if (auto* x = std::get_if<ImuSample>(&a)) {
     const auto& y = std::get<ImuSample>(b);
     return x->f_imu_mps2 == y.f_imu_mps2 && x->w_imu_radps == y.w_imu_radps;
@@ -158,13 +159,13 @@ class SerialLinesTap final : public ReplayTap {
       : ber_(bit_error_rate), rng_(seed), ideal_(ideal) {}
 
   void onInput(const InputSample& s, NavCore* core) override {
-    switch (s.index()) {
-      case 0: return cross(xsens_, xsensFrame(std::get<ImuSample>(s), ahrs_, xsens_.counter++), s, core);
-      case 1: return cross(pd0_, dvlFrame(std::get<DvlSample>(s), pd0_.counter++), s, core);
-      case 2: return cross(nmea_, headingFrame(std::get<HeadingSample>(s)), s, core);
-      case 3: ahrs_ = std::get<AttitudeSample>(s); return;
-      default: return inner_.onInput(s, core);
-    }
+    std::visit(Overloaded{[&](const ImuSample& m) { cross(xsens_, xsensFrame(m, ahrs_, xsens_.counter++), s, core); },
+                          [&](const DvlSample& m) { cross(pd0_, dvlFrame(m, pd0_.counter++), s, core); },
+                          [&](const HeadingSample& m) { cross(nmea_, headingFrame(m), s, core); },
+                          [&](const AttitudeSample& m) { ahrs_ = m; },
+                          [&](const DepthSample&) { inner_.onInput(s, core); },
+                          [&](const VisionResult&) { inner_.onInput(s, core); }},
+               s);
   }
   void beforeTick(TimeUs t_us, NavCore* core) override { inner_.beforeTick(t_us, core); }
   void afterTick(const NavSolution& solution, const NavCore& core) override { inner_.afterTick(solution, core); }

@@ -31,16 +31,16 @@ constexpr double kDive_s = 30.0;
 struct Sensor {
   const char* stream;   // scenario name
   NavSource source;
-  int input_kind;       // InputSample index
+  InputKind input_kind;
   double period_s;      // sample period in the default scenario
   double timeout_s;     // the board's stale timeout
 };
 
-const Sensor kDvl{"dvl", kSrcDvl, 1, 0.2, 1.0};
-const Sensor kCompass{"compass", kSrcHeading, 2, 0.1, 1.0};
-const Sensor kAttitude{"attitude", kSrcAttitude, 3, 0.1, 1.0};
-const Sensor kDepth{"depth", kSrcDepth, 4, 0.1, 1.0};
-const Sensor kImu{"imu", kSrcImu, 0, 0.01, 0.05};
+const Sensor kDvl{"dvl", kSrcDvl, InputKind::kDvl, 0.2, 1.0};
+const Sensor kCompass{"compass", kSrcHeading, InputKind::kHeading, 0.1, 1.0};
+const Sensor kAttitude{"attitude", kSrcAttitude, InputKind::kAttitude, 0.1, 1.0};
+const Sensor kDepth{"depth", kSrcDepth, InputKind::kDepth, 0.1, 1.0};
+const Sensor kImu{"imu", kSrcImu, InputKind::kImu, 0.01, 0.05};
 
 std::string fault(const Sensor& s, const std::string& kind, double t0, double t1, const std::string& params = "") {
   if (params.empty()) return strf("[{stream: %s, kind: %s, t_start_s: %.3f, t_end_s: %.3f}]", s.stream, kind.c_str(), t0, t1);

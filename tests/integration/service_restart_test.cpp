@@ -38,9 +38,8 @@ RunTimeline readTimeline(const std::string& recording) {
   reader.forEach(
       true,
       [&](const ReplayEvent& e) {
-        if (e.kind == ReplayEvent::Kind::kInput && e.input.index() == 5) {
-          r.max_map_frames = std::max(r.max_map_frames, std::get<VisionResult>(e.input).map_frames);
-        }
+        const auto* vision = e.kind == ReplayEvent::Kind::kInput ? std::get_if<VisionResult>(&e.input) : nullptr;
+        if (vision) r.max_map_frames = std::max(r.max_map_frames, vision->map_frames);
         if (e.kind != ReplayEvent::Kind::kSolution) return true;
         if (first < 0) first = e.t_us;
         ++r.solutions;

@@ -114,7 +114,7 @@ struct FaultySamples {
   int accepted = 0;
 };
 
-inline FaultySamples faultySamples(const FaultRun& clean, const FaultRun& faulted, int kind) {
+inline FaultySamples faultySamples(const FaultRun& clean, const FaultRun& faulted, InputKind kind) {
   FaultySamples f;
   std::size_t j = 0;
   const auto& a = clean.tap->inputs();

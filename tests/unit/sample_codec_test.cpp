@@ -21,7 +21,7 @@ T roundTrip(const T& sample) {
   EXPECT_GT(n, 0u);
   InputSample out;
   EXPECT_TRUE(decodeInput(inputTopic(in), buf.data(), n, &out));
-  EXPECT_EQ(out.index(), in.index());
+  EXPECT_EQ(inputKind(out), inputKind(in));
   return std::get<T>(out);
 }
 
