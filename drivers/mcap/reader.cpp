@@ -14,12 +14,8 @@ void Reader::reset() {
   file_.close();
   path_.clear();
   header_ = Header{};
-  schemas_.clear();
-  channels_.clear();
-  statistics_ = Statistics{};
-  chunks_.clear();
-  metadata_.clear();
-  has_summary_ = footer_valid_ = truncated_ = has_unchunked_messages_ = false;
+  clearIndex();
+  footer_valid_ = truncated_ = has_unchunked_messages_ = false;
   data_start_ = data_end_ = 0;
   header_crc_ = data_crc_ = 0;
   scanned_channel_counts_.clear();
@@ -33,6 +29,15 @@ void Reader::reset() {
 }
 
 void Reader::close() { reset(); }
+
+void Reader::clearIndex() {
+  schemas_.clear();
+  channels_.clear();
+  statistics_ = Statistics{};
+  chunks_.clear();
+  metadata_.clear();
+  has_summary_ = false;
+}
 
 bool Reader::fail(const std::string& what, uint64_t offset) {
   error_ = path_ + ": " + what + " at byte " + std::to_string(offset);

@@ -68,6 +68,8 @@ class Reader {
   enum class Unpack { kOk, kSkipped, kFatal };
 
   void reset();
+  // Forgets the schemas, channels, statistics, chunk list and metadata (summary or scan).
+  void clearIndex();
   bool fail(const std::string& what, uint64_t offset);
   void warn(const std::string& what, uint64_t offset);
 

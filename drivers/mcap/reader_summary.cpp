@@ -117,12 +117,7 @@ bool Reader::loadIndexedMetadata(const std::vector<MetadataIndex>& indexes) {
 }
 
 void Reader::discardSummary() {
-  schemas_.clear();
-  channels_.clear();
-  statistics_ = Statistics{};
-  chunks_.clear();
-  metadata_.clear();
-  has_summary_ = false;
+  clearIndex();
   data_end_ = file_.size() - kMagicSize - kFooterRecordSize;
 }
 

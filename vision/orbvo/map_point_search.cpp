@@ -38,20 +38,8 @@ int MapPointSearch::searchPreviousFrame(const OrbFrame& prev, const CameraPoseEs
   for (std::size_t i = 0; i < prev.map_point.size(); ++i) {
     const int m = prev.map_point[i];
     if (m < 0) continue;
-    MapPoint& point = map->point(m);
-    if (!point.alive || point.visit_stamp == stamp) continue;
-    point.visit_stamp = stamp;
-    const Eigen::Vector3d p_in_cam_m =
-        predicted.R_cam_world * point.p_in_world_m + predicted.p_world_in_cam_m;
-    if (p_in_cam_m.z() < kMinProjectionDepthM) continue;
-    const Eigen::Vector2d uv = projectLeft(rig_, p_in_cam_m);
-    if (!insideImage(uv)) continue;
-    const ProjectionMatch match = searchNearProjection(
-        grid_, cur->features, cur->descriptors, cur->available, level_scale_.data(), uv,
-        prev.features[i].level, prev.descriptors[i], search);
-    if (match.index < 0 || match.distance >= cur->match_distance[match.index]) continue;
-    cur->map_point[match.index] = m;
-    cur->match_distance[match.index] = match.distance;
+    matchProjection(m, predicted, prev.features[i].level, prev.descriptors[i], search, stamp, map,
+                    cur);
   }
   return cur->associationCount();
 }
@@ -86,21 +74,31 @@ void MapPointSearch::searchKeyframePoints(const Keyframe& kf, const CameraPoseEs
                                           int stamp, VoMap* map, OrbFrame* cur) const {
   for (const int m : kf.map_point) {
     if (m < 0) continue;
-    MapPoint& point = map->point(m);
-    if (!point.alive || point.visit_stamp == stamp) continue;
-    point.visit_stamp = stamp;
-    const Eigen::Vector3d p_in_cam_m =
-        pose.R_cam_world * point.p_in_world_m + pose.p_world_in_cam_m;
-    if (p_in_cam_m.z() < kMinProjectionDepthM) continue;
-    const Eigen::Vector2d uv = projectLeft(rig_, p_in_cam_m);
-    if (!insideImage(uv)) continue;
-    const ProjectionMatch match = searchNearProjection(
-        grid_, cur->features, cur->descriptors, cur->available, level_scale_.data(), uv,
-        point.level, point.descriptor, map_search_);
-    if (match.index < 0 || match.distance >= cur->match_distance[match.index]) continue;
-    cur->map_point[match.index] = m;
-    cur->match_distance[match.index] = match.distance;
+    const MapPoint& point = map->point(m);
+    matchProjection(m, pose, point.level, point.descriptor, map_search_, stamp, map, cur);
   }
+}
+
+// Map point m, unless dead or visited by this search (stamp), projected by `pose` and matched near its
+// projection with the query's level and descriptor; the match takes the feature unless it holds a
+// closer one.
+void MapPointSearch::matchProjection(int m, const CameraPoseEstimate& pose, int level,
+                                     const OrbDescriptor& descriptor,
+                                     const ProjectionSearchConfig& search, int stamp, VoMap* map,
+                                     OrbFrame* cur) const {
+  MapPoint& point = map->point(m);
+  if (!point.alive || point.visit_stamp == stamp) return;
+  point.visit_stamp = stamp;
+  const Eigen::Vector3d p_in_cam_m = pose.R_cam_world * point.p_in_world_m + pose.p_world_in_cam_m;
+  if (p_in_cam_m.z() < kMinProjectionDepthM) return;
+  const Eigen::Vector2d uv = projectLeft(rig_, p_in_cam_m);
+  if (!insideImage(uv)) return;
+  const ProjectionMatch match =
+      searchNearProjection(grid_, cur->features, cur->descriptors, cur->available,
+                           level_scale_.data(), uv, level, descriptor, search);
+  if (match.index < 0 || match.distance >= cur->match_distance[match.index]) return;
+  cur->map_point[match.index] = m;
+  cur->match_distance[match.index] = match.distance;
 }
 
 }  // namespace deepnav

@@ -45,6 +45,9 @@ class MapPointSearch {
   void searchKeyframePoints(const Keyframe& kf, const CameraPoseEstimate& pose, int stamp,
                             VoMap* map, OrbFrame* cur) const;
   bool insideImage(const Eigen::Vector2d& uv_px) const;
+  void matchProjection(int m, const CameraPoseEstimate& pose, int level,
+                       const OrbDescriptor& descriptor, const ProjectionSearchConfig& search,
+                       int stamp, VoMap* map, OrbFrame* cur) const;
 
   StereoRig rig_{};
   std::vector<double> level_scale_;
