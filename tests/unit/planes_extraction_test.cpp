@@ -123,6 +123,8 @@ TEST(PlaneExtraction, FindsFloorAndBoxFacesWithNormalsOffsetsAndHole) {
     EXPECT_LT(p.n_in_cam.dot(p.p_centroid_in_cam_m), 0.0);
     EXPECT_NEAR(p.n_in_cam.dot(p.p_centroid_in_cam_m), p.d_m, 1e-9);
     EXPECT_LT(p.rms_m, 0.03);
+    // the bounding box (from the fit's raster pass) is that of the plane's label cells
+    EXPECT_EQ(p.bbox_cells, cv::boundingRect(f.extractor.labels() == p.label)) << id;
     // covariance: symmetric, positive semi-definite, tiny for thousands of points
     EXPECT_TRUE(p.covariance.isApprox(p.covariance.transpose(), 1e-9));
     EXPECT_GT(p.covariance.trace(), 0.0);

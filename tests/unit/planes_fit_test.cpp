@@ -118,5 +118,60 @@ TEST(DavenportQMethod, OneVectorLeavesTheTurnAboutItUnobservable) {
   EXPECT_NEAR(v_b[0].dot(result.cov_rotvec_rad2 * v_b[0]), 1e4, 1.0);
 }
 
+TEST(PlaneFit, RunsInSimdBlocksMatchTheCellByCellFitNearANeighbour) {
+  // GIVEN a slanted noisy plane over 63 x 20 cells (rows are runs of 15 blocks of four and a tail
+  // of three) and a neighbouring plane cutting it near the middle column, so that the band test
+  // drops some cells of every row
+  const Eigen::Vector3d n_true = Eigen::Vector3d(0.3, 0.4, -1.0).normalized();
+  PlaneNoiseModel noise;
+  noise.disparity_noise_per_fb = 0.3 / kFb;
+  OrganizedCloud cloud;
+  ASSERT_TRUE(cloud.allocate(20, 63, 1));
+  std::mt19937 rng(7);
+  noisyPlaneCloud(n_true, -2.0, 0.3, &rng, &cloud);
+  std::vector<std::int32_t> cells;
+  const Plane reference = fitAll(cloud, noise, &cells);
+  ScatterSums sums;
+  const cv::Vec3f& o = cloud.row(0)[0];
+  sums.reset(Eigen::Vector3d(o[0], o[1], o[2]));
+  for (int r = 0; r < cloud.rows(); ++r) {
+    for (int c = 0; c < cloud.cols(); ++c) {
+      const cv::Vec3f& p = cloud.row(r)[c];
+      sums.add(p[0] - sums.origin.x(), p[1] - sums.origin.y(), p[2] - sums.origin.z());
+    }
+  }
+  const cv::Vec3f& mid = cloud.row(10)[31];
+  const Eigen::Vector3f n_other = Eigen::Vector3f(1.0f, 0.0f, 0.2f).normalized();
+  const Eigen::Vector4f other(n_other.x(), n_other.y(), n_other.z(),
+                              n_other.dot(Eigen::Vector3f(mid[0], mid[1], mid[2])));
+  NeighbourBand band;
+  band.planes = &other;
+  band.count = 1;
+  band.band_m = 0.01f;
+  band.band_sigmas = 3.0f;
+
+  // WHEN the cells are fed row by row as runs (SIMD blocks), and one by one (the scalar test)
+  PlaneFitAccumulator runs, single;
+  runs.reset(sums, reference.n_in_cam, noise, band);
+  single.reset(sums, reference.n_in_cam, noise, band);
+  for (int r = 0; r < cloud.rows(); ++r) {
+    runs.addRun(cloud.row(r), cloud.cols());
+    for (int c = 0; c < cloud.cols(); ++c) single.add(cloud.row(r)[c]);
+  }
+  Plane from_runs, from_single;
+  ASSERT_TRUE(runs.solve(sums, 20 * 63, &from_runs));
+  ASSERT_TRUE(single.solve(sums, 20 * 63, &from_single));
+
+  // THEN both keep the same cells (some, not all) and give the same plane and covariance (the
+  // sums differ only in their order of addition)
+  EXPECT_EQ(from_runs.fit_point_count, from_single.fit_point_count);
+  EXPECT_GT(from_runs.fit_point_count, 20 * 40);
+  EXPECT_LT(from_runs.fit_point_count, 20 * 63 - 20);
+  EXPECT_LT((from_runs.n_in_cam - from_single.n_in_cam).norm(), 1e-9);
+  EXPECT_NEAR(from_runs.d_m, from_single.d_m, 1e-9);
+  EXPECT_LT((from_runs.covariance - from_single.covariance).norm(),
+            1e-6 * from_single.covariance.norm());
+}
+
 }  // namespace
 }  // namespace deepnav

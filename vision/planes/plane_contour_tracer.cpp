@@ -13,6 +13,21 @@ constexpr int kDc[8] = {1, 1, 0, -1, -1, -1, 0, 1};
 constexpr int kEast = 0;
 constexpr int kWest = 4;
 
+// End (one past) of the run of equal bytes starting at row[c], eight bytes per step.
+int runEnd(const std::uint8_t* row, int c, int cols) {
+  const std::uint8_t k = row[c];
+  const std::uint64_t pattern = 0x0101010101010101ull * k;
+  int end = c + 1;
+  while (end + 8 <= cols) {
+    std::uint64_t word;
+    std::memcpy(&word, row + end, sizeof word);
+    if (word != pattern) break;
+    end += 8;
+  }
+  while (end < cols && row[end] == k) ++end;
+  return end;
+}
+
 }  // namespace
 
 bool PlaneContourTracer::init(int rows, int cols) {
@@ -95,32 +110,40 @@ bool PlaneContourTracer::trace(const cv::Mat& labels, const int* plane_of_label,
   }
   // memset rather than Mat::setTo, which allocates (marks_ is continuous: created in init()).
   std::memset(marks_.data, 0, marks_.total());
+  // A border can only start at the first or the last cell of a run of one label (inside a run
+  // both horizontal neighbours hold the label): the scan visits those two cells per run, in
+  // column order, and skips the run's interior eight cells at a time.
+  auto startBorder = [&](int r, int c, std::uint8_t k, bool left_out, bool right_out) {
+    const std::int8_t m = marks_.ptr<std::int8_t>(r)[c];
+    bool is_hole;
+    if (m == 0 && left_out) {
+      is_hole = false;
+    } else if (m != -1 && right_out) {
+      is_hole = true;
+    } else {
+      return;
+    }
+    const bool stored = set->beginPolygon(plane_of_label[k], is_hole);
+    double area2 = 0.0;
+    traceBorder(labels, r, c, is_hole ? kEast : kWest, k, step_px, set, &area2);
+    const double area = 0.5 * std::abs(area2);
+    if (!stored) return;
+    if (is_hole && area < min_hole_area_px2) {
+      set->dropPolygon();
+    } else {
+      set->endPolygon(area);
+    }
+  };
   for (int r = 0; r < rows_; ++r) {
     const std::uint8_t* l = labels.ptr<std::uint8_t>(r);
-    const std::int8_t* m = marks_.ptr<std::int8_t>(r);
-    for (int c = 0; c < cols_; ++c) {
+    for (int c = 0; c < cols_;) {
       const std::uint8_t k = l[c];
-      if (k == 0 || plane_of_label[k] < 0) continue;
-      const bool left_out = c == 0 || l[c - 1] != k;
-      const bool right_out = c + 1 == cols_ || l[c + 1] != k;
-      bool is_hole;
-      if (m[c] == 0 && left_out) {
-        is_hole = false;
-      } else if (m[c] != -1 && right_out) {
-        is_hole = true;
-      } else {
-        continue;
+      const int end = runEnd(l, c, cols_);
+      if (k != 0 && plane_of_label[k] >= 0) {
+        startBorder(r, c, k, true, end == c + 1);
+        if (end - 1 > c) startBorder(r, end - 1, k, false, true);
       }
-      const bool stored = set->beginPolygon(plane_of_label[k], is_hole);
-      double area2 = 0.0;
-      traceBorder(labels, r, c, is_hole ? kEast : kWest, k, step_px, set, &area2);
-      const double area = 0.5 * std::abs(area2);
-      if (!stored) continue;
-      if (is_hole && area < min_hole_area_px2) {
-        set->dropPolygon();
-      } else {
-        set->endPolygon(area);
-      }
+      c = end;
     }
   }
   // Per plane: outer boundaries, then holes, each largest first.

@@ -1,5 +1,7 @@
 #include "vision/planes/plane_extractor.h"
 
+#include <algorithm>
+
 namespace deepnav {
 
 bool PlaneExtractor::init(const PlaneExtractionConfig& config, const StereoGeometry& geometry,
@@ -58,8 +60,12 @@ int PlaneExtractor::extract(const OrganizedCloud& cloud, PlaneSet* planes) {
     }
     fits_[i].reset(region.sums, region.normal, noise_, band);
   }
-  // One raster pass feeds every plane's fit: sequential reads of the cloud.
+  // One raster pass feeds every plane's fit (sequential reads of the cloud) and bounding box
+  // (x, y: the smallest column and row; width, height: the largest, made sizes below).
   const cv::Mat& labels = grower_.labels();
+  for (int i = 0; i < regions; ++i) {
+    bbox_of_label_[grower_.region(i).label] = cv::Rect(cloud.cols(), cloud.rows(), -1, -1);
+  }
   for (int r = 0; r < cloud.rows(); ++r) {
     const std::uint8_t* l = labels.ptr<std::uint8_t>(r);
     const cv::Vec3f* p = cloud.row(r);
@@ -67,7 +73,14 @@ int PlaneExtractor::extract(const OrganizedCloud& cloud, PlaneSet* planes) {
       const std::uint8_t label = l[c];
       int end = c + 1;
       while (end < cloud.cols() && l[end] == label) ++end;
-      if (label != 0) fits_[region_of_label_[label]].addRun(p + c, end - c);
+      if (label != 0) {
+        fits_[region_of_label_[label]].addRun(p + c, end - c);
+        cv::Rect& box = bbox_of_label_[label];
+        box.x = std::min(box.x, c);
+        box.y = std::min(box.y, r);
+        box.width = std::max(box.width, end - 1);
+        box.height = r;  // rows are visited in order
+      }
       c = end;
     }
   }
@@ -80,7 +93,8 @@ int PlaneExtractor::extract(const OrganizedCloud& cloud, PlaneSet* planes) {
       continue;
     }
     plane->label = region.label;
-    plane->bbox_cells = region.bbox_cells;
+    const cv::Rect& box = bbox_of_label_[region.label];
+    plane->bbox_cells = cv::Rect(box.x, box.y, box.width - box.x + 1, box.height - box.y + 1);
     plane_of_label_[region.label] = planes->size() - 1;
   }
   const double min_hole_area_px2 = config_.min_hole_area_px;

@@ -39,6 +39,7 @@ class PlaneExtractor {
   PlaneContourTracer tracer_;
   std::array<int, 256> plane_of_label_{};
   std::array<int, 256> region_of_label_{};
+  std::array<cv::Rect, 256> bbox_of_label_{};  // cells of each label, from the raster pass
   std::vector<Eigen::Vector4f> neighbour_planes_;  // max_planes per plane
   std::vector<PlaneFitAccumulator> fits_;
 };

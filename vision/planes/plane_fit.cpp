@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <cmath>
+#include <opencv2/core/hal/intrin.hpp>
 
 namespace deepnav {
 namespace {
@@ -39,7 +40,11 @@ void PlaneFitAccumulator::reset(const ScatterSums& sums, const Eigen::Vector3d& 
     d0_n_[j] = d0_ * q.head<3>();
     d_[j] = q.w();
     sigma_coeff_[j] = neighbours.band_sigmas * kd_ * std::abs(q.w()) * std::abs(d0_);
+    const float values[5] = {d0_n_[j].x(), d0_n_[j].y(), d0_n_[j].z(), d_[j], sigma_coeff_[j]};
+    for (int v = 0; v < 5; ++v) neighbour_lanes_[j][v].fill(values[v]);
   }
+  const float values[6] = {kf_, floor2f_, n0_.x(), n0_.y(), n0_.z(), band_m_};
+  for (int v = 0; v < 6; ++v) lanes_[v].fill(values[v]);
   sw_ = WeightedMoments{};
   sa_ = WeightedMoments{};
   fitted_ = 0;
@@ -58,6 +63,112 @@ bool PlaneFitAccumulator::inNeighbourBand(const cv::Vec3f& p) const {
     if (lhs <= band_m_ * abs_np + sigma_coeff_[j] * p[2]) return true;
   }
   return false;
+}
+
+// inNeighbourBand and the weight of addRun for four cells in SIMD lanes (OpenCV universal
+// intrinsics: SSE2 on x86-64, NEON on aarch64). Each lane does the scalar code's float
+// operations in the same order (products, then sums left to right, no fused multiply-add), so
+// the masks and weights are bit for bit those of the scalar path.
+unsigned PlaneFitAccumulator::bandMask4(const cv::Vec3f* p, float* w) const {
+  auto lane = [](const std::array<float, 4>& a) { return cv::v_load(a.data()); };
+  cv::v_float32x4 x, y, z;
+  cv::v_load_deinterleave(&p[0][0], x, y, z);
+  const cv::v_float32x4 kz = lane(lanes_[0]) * z;
+  cv::v_store(w, cv::v_setall_f32(1.0f) / (kz * kz + lane(lanes_[1])));
+  if (neighbour_count_ == 0) return 0u;
+  const cv::v_float32x4 np = lane(lanes_[2]) * x + lane(lanes_[3]) * y + lane(lanes_[4]) * z;
+  const cv::v_float32x4 band = lane(lanes_[5]) * cv::v_abs(np);
+  cv::v_float32x4 in_band = cv::v_setzero_f32();
+  for (int j = 0; j < neighbour_count_; ++j) {
+    const auto& m = neighbour_lanes_[j];
+    const cv::v_float32x4 lhs =
+        cv::v_abs(lane(m[0]) * x + lane(m[1]) * y + lane(m[2]) * z - lane(m[3]) * np);
+    in_band = in_band | (lhs <= band + lane(m[4]) * z);
+  }
+  return static_cast<unsigned>(cv::v_signmask(in_band));
+}
+
+namespace {
+
+#if CV_SIMD128_64F
+// WeightedMoments in five SIMD pairs, (w, x) (y, z) (xx, xy) (xz, yy) (yz, zz): every lane gets
+// the scalar add()'s product and sum (w * 1 == w exactly), so the sums are bit for bit the same.
+struct PairMoments {
+  cv::v_float64x2 wx = cv::v_setzero_f64(), yz = cv::v_setzero_f64();
+  cv::v_float64x2 xx_xy = cv::v_setzero_f64(), xz_yy = cv::v_setzero_f64();
+  cv::v_float64x2 yz_zz = cv::v_setzero_f64();
+  // one_x = (1, x), y_z = (y, z), x_y = (x, y), z_y = (z, y), z_z = (z, z)
+  void add(const cv::v_float64x2& one_x, const cv::v_float64x2& y_z, const cv::v_float64x2& x_y,
+           const cv::v_float64x2& z_y, const cv::v_float64x2& z_z, double weight) {
+    const cv::v_float64x2 w = cv::v_setall_f64(weight);
+    wx = wx + w * one_x;
+    const cv::v_float64x2 wy_wz = w * y_z;
+    yz = yz + wy_wz;
+    const cv::v_float64x2 wx_wy = w * x_y;
+    xx_xy = xx_xy + cv::v_combine_low(wx_wy, wx_wy) * x_y;
+    xz_yy = xz_yy + wx_wy * z_y;
+    yz_zz = yz_zz + wy_wz * z_z;
+  }
+  void mergeInto(WeightedMoments* m) const {
+    alignas(16) double t[10];
+    cv::v_store_aligned(t, wx);
+    cv::v_store_aligned(t + 2, yz);
+    cv::v_store_aligned(t + 4, xx_xy);
+    cv::v_store_aligned(t + 6, xz_yy);
+    cv::v_store_aligned(t + 8, yz_zz);
+    const WeightedMoments o{t[0], t[1], t[2], t[3], t[4], t[5], t[6], t[7], t[8], t[9]};
+    m->merge(o);
+  }
+};
+#endif
+
+}  // namespace
+
+void PlaneFitAccumulator::addRun(const cv::Vec3f* p, int count) {
+  int fitted = 0;
+  int i = 0;
+  alignas(16) float w4[4];
+#if CV_SIMD128_64F
+  PairMoments sw, sa;
+  const cv::v_float64x2 one = cv::v_setall_f64(1.0);
+  const cv::v_float64x2 origin_xy(origin_.x(), origin_.y());
+  auto addCellPairs = [&](const cv::Vec3f& q, double w) {
+    const cv::v_float64x2 x_y =
+        cv::v_float64x2(static_cast<double>(q[0]), static_cast<double>(q[1])) - origin_xy;
+    const double z = q[2] - origin_.z();
+    const cv::v_float64x2 z_z = cv::v_setall_f64(z);
+    const cv::v_float64x2 one_x = cv::v_combine_low(one, x_y);
+    const cv::v_float64x2 y_z = cv::v_combine_high(x_y, z_z);
+    const cv::v_float64x2 z_y = cv::v_combine_high(z_z, x_y);
+    sw.add(one_x, y_z, x_y, z_y, z_z, w);
+    sa.add(one_x, y_z, x_y, z_y, z_z, w * kd2_ * q[2] * q[2]);
+  };
+#else
+  WeightedMoments sw, sa;
+  auto addCellPairs = [&](const cv::Vec3f& q, double w) { addCell(q, w, &sw, &sa); };
+#endif
+  for (; i + 4 <= count; i += 4) {
+    const unsigned in_band = bandMask4(p + i, w4);
+    for (int k = 0; k < 4; ++k) {
+      if ((in_band >> k) & 1u) continue;
+      ++fitted;
+      addCellPairs(p[i + k], w4[k]);
+    }
+  }
+  for (; i < count; ++i) {
+    if (neighbour_count_ > 0 && inNeighbourBand(p[i])) continue;
+    ++fitted;
+    const float kz = kf_ * p[i][2];
+    addCellPairs(p[i], 1.0f / (kz * kz + floor2f_));  // weights need no double division
+  }
+#if CV_SIMD128_64F
+  sw.mergeInto(&sw_);
+  sa.mergeInto(&sa_);
+#else
+  sw_.merge(sw);
+  sa_.merge(sa);
+#endif
+  fitted_ += fitted;
 }
 
 bool PlaneFitAccumulator::solve(const ScatterSums& sums, int point_count, Plane* plane) const {

@@ -103,28 +103,23 @@ class PlaneFitAccumulator {
   void reset(const ScatterSums& sums, const Eigen::Vector3d& normal_unweighted,
              const PlaneNoiseModel& noise, const NeighbourBand& neighbours);
   void add(const cv::Vec3f& p) { addRun(&p, 1); }
-  // count consecutive cells of this plane (a run of a row): summed in registers, then merged.
-  void addRun(const cv::Vec3f* p, int count) {
-    WeightedMoments sw, sa;
-    int fitted = 0;
-    for (int i = 0; i < count; ++i) {
-      if (neighbour_count_ > 0 && inNeighbourBand(p[i])) continue;
-      ++fitted;
-      const float kz = kf_ * p[i][2];
-      const double w = 1.0f / (kz * kz + floor2f_);  // weights need no double division
-      const double x = p[i][0] - origin_.x(), y = p[i][1] - origin_.y(), z = p[i][2] - origin_.z();
-      sw.add(x, y, z, w);
-      sa.add(x, y, z, w * kd2_ * p[i][2] * p[i][2]);
-    }
-    sw_.merge(sw);
-    sa_.merge(sa);
-    fitted_ += fitted;
-  }
+  // count consecutive cells of this plane (a run of a row): the neighbour-band test and the
+  // weights four cells at a time (SIMD, the same float operations as the scalar path), the
+  // moments summed in registers in cell order, then merged (plane_fit.cpp).
+  void addRun(const cv::Vec3f* p, int count);
   // sums: the region's unweighted moments (rms); point_count: the region's cells.
   bool solve(const ScatterSums& sums, int point_count, Plane* plane) const;
 
  private:
   bool inNeighbourBand(const cv::Vec3f& p) const;
+  // Four cells from p: bit i set when cell i is in a neighbour's band (inNeighbourBand);
+  // *w receives their weights 1 / ((k Z)^2 + floor^2).
+  unsigned bandMask4(const cv::Vec3f* p, float* w) const;
+  void addCell(const cv::Vec3f& p, double w, WeightedMoments* sw, WeightedMoments* sa) const {
+    const double x = p[0] - origin_.x(), y = p[1] - origin_.y(), z = p[2] - origin_.z();
+    sw->add(x, y, z, w);
+    sa->add(x, y, z, w * kd2_ * p[2] * p[2]);
+  }
 
   static constexpr int kMaxNeighbours = 16;
   Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();
@@ -144,6 +139,10 @@ class PlaneFitAccumulator {
   std::array<Eigen::Vector3f, kMaxNeighbours> d0_n_{};
   std::array<float, kMaxNeighbours> d_{};
   std::array<float, kMaxNeighbours> sigma_coeff_{};
+  // The same constants repeated in four lanes for bandMask4 (a broadcast per use costs more than
+  // the test): kf, floor^2, n0 x y z, band_m; per neighbour d0 n_j x y z, d_j, sigma coefficient.
+  std::array<std::array<float, 4>, 6> lanes_{};
+  std::array<std::array<std::array<float, 4>, 5>, kMaxNeighbours> neighbour_lanes_{};
   WeightedMoments sw_, sa_;  // weights w_i and a_i = w_i (k_d Z_i)^2
   int fitted_ = 0;
 };

@@ -20,7 +20,6 @@ struct PlaneRegion {
   ScatterSums sums;                                   // unweighted moments
   double sum_z2 = 0.0;                                // sum of Z^2 (noise scatter, see below)
   Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();  // least-squares normal, noise-corrected
-  cv::Rect bbox_cells;
 };
 
 // Region growing of Poppinga et al. (IROS 2008) on an organised cloud: seeds are planar k x k
