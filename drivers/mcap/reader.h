@@ -65,8 +65,6 @@ class Reader {
   using ChunkRecordVisitor =
       std::function<bool(uint8_t opcode, const uint8_t* content, size_t size, uint64_t offset)>;
 
-  enum class Unpack { kOk, kSkipped, kFatal };
-
   void reset();
   // Forgets the schemas, channels, statistics, chunk list and metadata (summary or scan).
   void clearIndex();
@@ -100,8 +98,9 @@ class Reader {
   void rebuildStatistics();
   void describeCut();
 
-  // A chunk's records: decompressed, checked, walked (reader_chunk.cpp).
-  Unpack unpackChunk(const uint8_t* content, size_t size, uint64_t offset, const uint8_t** records,
+  // A chunk's records: decompressed, checked, walked (reader_chunk.cpp). unpackChunk() is false on a
+  // malformed record (error() set); a skipped chunk has no records (*records_size 0).
+  bool unpackChunk(const uint8_t* content, size_t size, uint64_t offset, const uint8_t** records,
                      size_t* records_size);
   bool forEachChunkRecord(const uint8_t* records, size_t size, uint64_t chunk_offset,
                           const ChunkRecordVisitor& visit);

@@ -14,17 +14,18 @@ constexpr uint64_t kMaxChunkUncompressedBytes = uint64_t(1) << 30;
 
 }  // namespace
 
-Reader::Unpack Reader::unpackChunk(const uint8_t* content, size_t size, uint64_t offset,
-                                   const uint8_t** records, size_t* records_size) {
+bool Reader::unpackChunk(const uint8_t* content, size_t size, uint64_t offset,
+                         const uint8_t** records, size_t* records_size) {
+  *records = nullptr;
+  *records_size = 0;
   ChunkView v;
-  if (!parseChunk(ByteCursor(content, size), &v)) {
-    fail("malformed Chunk record", offset);
-    return Unpack::kFatal;
-  }
+  if (!parseChunk(ByteCursor(content, size), &v)) return fail("malformed Chunk record", offset);
   const auto skip = [&](const std::string& why) {
     ++skipped_chunks_;
     warn("chunk skipped: " + why, offset);
-    return Unpack::kSkipped;
+    *records = nullptr;
+    *records_size = 0;
+    return true;
   };
   if (v.uncompressed_size > kMaxChunkUncompressedBytes) {
     return skip("claims " + std::to_string(v.uncompressed_size) + " uncompressed bytes");
@@ -51,7 +52,7 @@ Reader::Unpack Reader::unpackChunk(const uint8_t* content, size_t size, uint64_t
     return skip("CRC mismatch (chunk says " + hex32(v.uncompressed_crc) + ", computed " +
                 hex32(crc) + ")");
   }
-  return Unpack::kOk;
+  return true;
 }
 
 bool Reader::forEachChunkRecord(const uint8_t* records, size_t size, uint64_t chunk_offset,

@@ -67,14 +67,7 @@ bool Reader::deliverChunk(const uint8_t* content, size_t size, uint64_t offset,
                           const MessageCallback& callback) {
   const uint8_t* records = nullptr;
   size_t records_size = 0;
-  switch (unpackChunk(content, size, offset, &records, &records_size)) {
-    case Unpack::kFatal:
-      return false;
-    case Unpack::kSkipped:
-      return true;
-    case Unpack::kOk:
-      break;
-  }
+  if (!unpackChunk(content, size, offset, &records, &records_size)) return false;
   forEachChunkRecord(records, records_size, offset,
                      [&](uint8_t op, const uint8_t* c, size_t n, uint64_t) {
                        if (op == uint8_t(Opcode::kMessage)) {

@@ -19,15 +19,10 @@ bool Reader::loadChunkAt(const ChunkInfo& chunk, std::vector<uint8_t>* records) 
   }
   const uint8_t* data = nullptr;
   size_t size = 0;
-  switch (unpackChunk(record_buffer_.data() + kRecordPrefixSize,
-                      record_buffer_.size() - kRecordPrefixSize, chunk.chunk_start_offset, &data,
-                      &size)) {
-    case Unpack::kFatal:
-      return false;
-    case Unpack::kSkipped:
-      return true;
-    case Unpack::kOk:
-      break;
+  if (!unpackChunk(record_buffer_.data() + kRecordPrefixSize,
+                   record_buffer_.size() - kRecordPrefixSize, chunk.chunk_start_offset, &data,
+                   &size)) {
+    return false;
   }
   records->assign(data, data + size);
   return true;
