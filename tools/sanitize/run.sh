@@ -3,8 +3,10 @@
 #   asan  builds everything (tests included, benchmarks excluded) with ASan+UBSan at -O1 in build-asan and
 #         runs the whole ctest suite there, minus the tests listed in ASAN_EXCLUDE with their reasons;
 #   tsan  builds only the threaded runtime's binaries and tests with TSan at -O1 in build-tsan and runs them.
+#   asan-unit  the CI's share of asan within its time budget: deepnav and the unit tests (ctest label unit)
+#         built with ASan+UBSan at -O1 in build-asan, and the unit tests run there.
 # Any sanitizer report fails the test that produced it (halt_on_error / abort), so the stage passes only with
-# zero findings. Usage: tools/sanitize/run.sh [asan] [tsan]   (default: both)
+# zero findings. Usage: tools/sanitize/run.sh [asan] [asan-unit] [tsan]   (default: asan tsan)
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/../.."
 stages=("$@")
@@ -48,13 +50,21 @@ for stage in "${stages[@]}"; do
       LSAN_OPTIONS="suppressions=$PWD/tools/sanitize/lsan.supp:print_suppressions=0" \
         ctest --test-dir build-asan --output-on-failure -j"$jobs" --timeout 2400 -E "$ASAN_EXCLUDE"
       ;;
+    asan-unit)
+      configure build-asan DEEPNAV_SANITIZE
+      cmake --build build-asan -j"$jobs" --target deepnav deepnav_unit_tests
+      ASAN_OPTIONS="detect_leaks=1:abort_on_error=1:strict_string_checks=1:detect_stack_use_after_return=0" \
+      UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1" \
+      LSAN_OPTIONS="suppressions=$PWD/tools/sanitize/lsan.supp:print_suppressions=0" \
+        ctest --test-dir build-asan --output-on-failure -j"$jobs" --timeout 1200 -L '^unit$'
+      ;;
     tsan)
       configure build-tsan DEEPNAV_TSAN
       cmake --build build-tsan -j"$jobs" --target "${TSAN_TARGETS[@]}"
       TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$PWD/tools/sanitize/tsan.supp" \
         ctest --test-dir build-tsan --output-on-failure -j"$jobs" --timeout 900 -R "$TSAN_TESTS"
       ;;
-    *) echo "usage: $0 [asan] [tsan]" >&2; exit 2 ;;
+    *) echo "usage: $0 [asan] [asan-unit] [tsan]" >&2; exit 2 ;;
   esac
   echo "sanitize: $stage stage passed in $(( $(date +%s) - start )) s"
 done
