@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "board/config/sensor_driver_configs.h"
+#include "board/service/driver_summary.h"
 #include "board/service/status_text.h"
 #include "drivers/clock/monotonic_clock.h"
 #include "drivers/realtime/realtime.h"
@@ -237,6 +238,8 @@ void DeepnavService::shutdown(std::string* error) {
   std::string why;
   if (cameras_) cameras_->stop();
   sensors_.stop();
+  const std::string drivers = formatDriverSummary(sensors_.status());
+  if (!drivers.empty()) std::fprintf(stderr, "deepnav run: sensor drivers at stop: %s\n", drivers.c_str());
   const bool closed = loop_->stop(&why);
   source_.stop();
   publisher_.stop();

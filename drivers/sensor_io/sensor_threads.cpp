@@ -82,6 +82,10 @@ void SensorThreads::runDepth(LiveInputs* inputs) {
 
 SensorThreads::Status SensorThreads::status() const {
   Status s;
+  s.dvl_on = dvl_ != nullptr;
+  s.ahrs_on = ahrs_ != nullptr;
+  s.can_on = can_ != nullptr;
+  s.depth_on = depth_ != nullptr;
   if (dvl_) {
     s.dvl = dvl_->counters();
     s.dvl_reopens = dvl_->reopens();

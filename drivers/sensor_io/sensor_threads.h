@@ -33,6 +33,7 @@ struct SensorThreadsConfig {
 class SensorThreads {
  public:
   struct Status {
+    bool dvl_on = false, ahrs_on = false, can_on = false, depth_on = false;  // which drivers ran
     SensorStreamDecoder::Counters dvl, ahrs;
     uint64_t dvl_reopens = 0, ahrs_reopens = 0;  // serial ports opened again after vanishing
     CanSensorDriver::Counters can;

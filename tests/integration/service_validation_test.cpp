@@ -220,11 +220,19 @@ TEST(ServiceLive, ADvlOnASerialLineFeedsTheLiveLoop) {
   // THEN the service ran on its live sources and the loop consumed the DVL's samples
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_TRUE(has(r.err, "sources live devices")) << r.err;
-  const std::size_t at = r.err.find("dvl ");
+  const std::size_t last = r.err.find("; last: ");  // the final status line: "dvl ok (N)"
+  ASSERT_NE(last, std::string::npos) << r.err;
+  const std::size_t at = r.err.find("dvl ", last);
   ASSERT_NE(at, std::string::npos) << r.err;
   const std::size_t open = r.err.find('(', at);
   ASSERT_NE(open, std::string::npos) << r.err;
   EXPECT_GT(std::stoll(r.err.substr(open + 1)), 5) << r.err;
+  // AND the DVL driver's own counters reach the journal at stop
+  const std::string drivers = "sensor drivers at stop: dvl ";
+  const std::size_t d = r.err.find(drivers);
+  ASSERT_NE(d, std::string::npos) << r.err;
+  EXPECT_GT(std::stoll(r.err.substr(d + drivers.size())), 5) << r.err;
+  EXPECT_TRUE(has(r.err.substr(d), "0 reopens")) << r.err;
 }
 
 }  // namespace
