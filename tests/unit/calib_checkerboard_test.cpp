@@ -185,7 +185,7 @@ class CheckerboardOpencvDoc : public ::testing::Test {
     if (!fs::exists(kOpencvDocData / "left01.jpg")) return;
     pairs_ = new std::vector<CalibrationPairInput>();
     for (int i = 1; i <= 14; ++i) {
-      char left[16], right[16];
+      char left[32], right[32];  // room for any int: -Wformat-truncation at -O1 (the ASan build)
       std::snprintf(left, sizeof left, "left%02d.jpg", i);
       std::snprintf(right, sizeof right, "right%02d.jpg", i);
       if (!fs::exists(kOpencvDocData / left)) continue;  // left10/right10 are not in the set
