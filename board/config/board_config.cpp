@@ -163,64 +163,8 @@ const std::array kStageBoardParams = {
       DEEPNAV_FIELD(stage.fuse_markers_in_stage2)},
 };
 
-// Between the stage machine's keys and the filter's (ekfParams()).
+// Between the vision worker's keys (visionPipelineParams()) and the filter's (ekfParams()).
 const std::array kBoardTailParams = {
-    P{"vision.vo_mode", ParamType::kChoice, "-", 0, 0, "adaptive", "adaptive|all|orb|planes|none",
-      "stage-2 visual odometry: adaptive (paper), all (both fused), orb, planes, none (T_L1)",
-      DEEPNAV_FIELD(vision.vo_mode)},
-    P{"vision.quality_threshold", ParamType::kDouble, "-", 0, 1, "0.45", "",
-      "image quality m_I below which the plane VO runs instead of the ORB VO", DEEPNAV_FIELD(vision.quality_threshold)},
-    P{"vision.quality_hysteresis", ParamType::kDouble, "-", 0, 0.49, "0.02", "",
-      "m_I must cross threshold -/+ this to switch modality", DEEPNAV_FIELD(vision.quality_hysteresis)},
-    P{"vision.planes_when_orb_lost", ParamType::kBool, "-", 0, 0, "true", "",
-      "adaptive: run the plane VO on a pair the ORB VO could not track", DEEPNAV_FIELD(vision.planes_when_orb_lost)},
-    P{"vision.orb_max_tracked", ParamType::kInt, "features", 1, 100000, "300", "",
-      "tracked ORB features that score 1 in m_I", DEEPNAV_FIELD(vision.orb_max_tracked)},
-    P{"vision.orb_reset_after_lost_frames", ParamType::kInt, "pairs", 0, 100000, "10", "",
-      "consecutive pairs the ORB VO failed to track or relocalise after which it starts a new map (0: never)",
-      DEEPNAV_FIELD(vision.orb_reset_after_lost_frames)},
-    P{"vision.orb_motion_prior", ParamType::kBool, "-", 0, 0, "false", "",
-      "when the ORB VO's motion disagrees with the navigation's prediction since the last tracked pair (chi-square "
-      "99.9 %), its inliers are re-selected around the prediction (coherently drifting marine snow falls outside); "
-      "the pose and covariance still come from the images (vision/orbvo/motion_prior.h)",
-      DEEPNAV_FIELD(vision.orb_motion_prior)},
-    P{"vision.dense_method", ParamType::kChoice, "-", 0, 0, "elas", "elas|sgbm|sgbm-wls",
-      "dense stereo of the workspace map and the plane VO", DEEPNAV_FIELD(vision.dense_method)},
-    P{"vision.dense_scale_down", ParamType::kInt, "-", 1, 2, "2", "",
-      "images reduced by this factor before dense matching", DEEPNAV_FIELD(vision.dense_scale_down)},
-    P{"vision.dense_disparities", ParamType::kInt, "px", 16, 256, "128", "",
-      "dense disparity search range at the reduced size", DEEPNAV_FIELD(vision.dense_disparities)},
-    P{"vision.filter_with_map", ParamType::kBool, "-", 0, 0, "true", "",
-      "stage 2: keep only cloud points near the stage-1 workspace map", DEEPNAV_FIELD(vision.filter_with_map)},
-    P{"vision.map_min_kept_fraction", ParamType::kDouble, "-", 0, 1, "0.3", "",
-      "stage 2: when the map filter would keep less than this share of a cloud, the view lies outside the "
-      "mapped workspace and the cloud is used unfiltered", DEEPNAV_FIELD(vision.map_min_kept_fraction)},
-    P{"vision.planes_covariance_scale", ParamType::kDouble, "-", 1, 1e8, "1000", "",
-      "multiplies the plane registration covariance: the per-point stereo errors of window matching are "
-      "correlated, so the independent-noise covariance is optimistic (on simulated dives the rotation errors "
-      "were 30-100x the predicted sigma)", DEEPNAV_FIELD(vision.planes_covariance_scale)},
-    P{"vision.planes_partial", ParamType::kBool, "-", 0, 0, "false", "",
-      "fuse single-plane registrations (two rotation axes, none about the normal)", DEEPNAV_FIELD(vision.planes_partial)},
-    P{"vision.planes_subspace", ParamType::kBool, "-", 0, 0, "false", "",
-      "plane registrations of degenerate sets give the directions they constrain (parallel planes: two rotation "
-      "axes and the translation along the normal; two planes: the rotation and the translation in their span); "
-      "the EKF fuses the constrained subspace only", DEEPNAV_FIELD(vision.planes_subspace)},
-    P{"vision.planes_independent_points", ParamType::kDouble, "cells", 0, 1e6, "0", "",
-      "plane covariance: at most this many stereo cells of a plane count as independent measurements (dense "
-      "stereo errors are correlated over a face: window overlap, support-point interpolation); 0: all cells",
-      DEEPNAV_FIELD(vision.planes_independent_points)},
-    P{"vision.map_resolution_m", ParamType::kDouble, "m", 0.01, 1, "0.05", "", "workspace octomap leaf size",
-      DEEPNAV_FIELD(vision.map_resolution_m)},
-    P{"vision.map_filter_distance_m", ParamType::kDouble, "m", 0.01, 2, "0.10", "",
-      "stage 2: points farther than this from every occupied voxel are removed",
-      DEEPNAV_FIELD(vision.map_filter_distance_m)},
-    P{"vision.map_every_n_frames", ParamType::kInt, "frames", 1, 1000, "5", "",
-      "stage 1: one stereo pair in n is matched densely and inserted in the map",
-      DEEPNAV_FIELD(vision.map_every_n_frames)},
-    P{"vision.map_min_frames", ParamType::kInt, "frames", 0, 100000, "20", "",
-      "clouds inserted before the map is ready (stage 2 criterion)", DEEPNAV_FIELD(vision.map_min_frames)},
-    P{"vision.map_min_voxels", ParamType::kInt, "voxels", 0, 10000000, "1500", "",
-      "occupied voxels before the map is ready (stage 2 criterion)", DEEPNAV_FIELD(vision.map_min_voxels)},
     P{"sources.replay_path", ParamType::kString, "path", 0, 0, "''", "",
       "`deepnav run`: recording played as the sensors, relative to the board file (sim and bench rigs)",
       DEEPNAV_FIELD(sources.replay_path)},
@@ -319,7 +263,7 @@ const std::array kBoardTailParams = {
 // refuses a size the factor does not divide); its disparity range must stay below the reduced width
 // (board/config/dense_stereo_range.h: OpenCV's SGBM throws there).
 bool checkDenseStereoSize(const BoardConfig& c, const std::string& name, std::string* error) {
-  const int s = c.vision.dense_scale_down;
+  const int s = c.vision.dense.scale_down;
   if (c.camera.width_px % s != 0 || c.camera.height_px % s != 0) {
     if (error) {
       *error = name + ": keys 'camera.width_px' and 'camera.height_px' (" + std::to_string(c.camera.width_px) + "x" +
@@ -329,9 +273,10 @@ bool checkDenseStereoSize(const BoardConfig& c, const std::string& name, std::st
     return false;
   }
   std::string why;
-  if (!denseStereoRangeFits(c.vision.dense_method, c.camera.width_px / s, c.vision.dense_disparities, &why)) {
+  const int disparities = c.vision.dense.num_disparities;
+  if (!denseStereoRangeFits(denseStereoMethodName(c.vision.dense.method), c.camera.width_px / s, disparities, &why)) {
     if (error) {
-      *error = name + ": key 'vision.dense_disparities' (" + std::to_string(c.vision.dense_disparities) +
+      *error = name + ": key 'vision.dense_disparities' (" + std::to_string(disparities) +
                ") does not fit 'camera.width_px' (" + std::to_string(c.camera.width_px) + " px, matched at 1/" +
                std::to_string(s) + " by 'vision.dense_scale_down'): " + why;
     }
@@ -341,12 +286,16 @@ bool checkDenseStereoSize(const BoardConfig& c, const std::string& name, std::st
 }
 
 // Where a board's default differs from the module's own: the bare filter checks no frozen IMU (its tests feed
-// a noiseless resting IMU), a vehicle's IMU noise never repeats.
+// a noiseless resting IMU), a vehicle's IMU noise never repeats; a vehicle's ORB VO starts a new map after 10
+// lost pairs and its plane registration covariance is scaled for correlated stereo errors (the bare
+// pipeline's never resets and takes the covariance as it comes).
 struct BoardDefault {
   const char* key;
   const char* default_text;
 };
-constexpr BoardDefault kBoardDefaults[] = {{"ekf.imu_stuck_after_samples", "10"}};
+constexpr BoardDefault kBoardDefaults[] = {{"vision.orb_reset_after_lost_frames", "10"},
+                                           {"vision.planes_covariance_scale", "1000"},
+                                           {"ekf.imu_stuck_after_samples", "10"}};
 
 // Every key of a board file, in the order `deepnav config --list` prints them, bound to `c`.
 std::vector<ParamSpecView> boardParams(BoardConfig& c) {
@@ -356,6 +305,7 @@ std::vector<ParamSpecView> boardParams(BoardConfig& c) {
   const std::vector<ParamSpecView> stage = bindParams(kStageBoardParams, c);
   views.insert(views.end(), stage.begin(), stage.end());
   appendModuleParams(stageParams(), kStageSection, c.stage.machine, &views);
+  appendModuleParams(visionPipelineParams(), kVisionSection, c.vision, &views);
   const std::vector<ParamSpecView> tail = bindParams(kBoardTailParams, c);
   views.insert(views.end(), tail.begin(), tail.end());
   appendModuleParams(ekfParams(), kEkfSection, c.ekf, &views);
@@ -372,7 +322,7 @@ std::vector<ParamSpecView> boardParams(BoardConfig& c) {
 bool validateModules(const BoardConfig& c, std::string* error) {
   return validateEkfConfig(c.ekf, error) && validateStageConfig(c.stage.machine, error) &&
          validatePanelPoseConfig(c.markers.panel_pose, error) &&
-         validateMarkerCovarianceConfig(c.markers.covariance, error);
+         validateMarkerCovarianceConfig(c.markers.covariance, error) && validateVisionPipelineConfig(c.vision, error);
 }
 
 }  // namespace

@@ -10,6 +10,7 @@
 #include "nav/markers/marker_pose_covariance.h"
 #include "nav/markers/panel_pose_config.h"
 #include "nav/stage/stage_config.h"
+#include "vision/pipeline/vision_pipeline_config.h"
 
 #include <Eigen/Geometry>
 
@@ -17,7 +18,7 @@ namespace deepnav {
 
 // Everything one vehicle's board.yaml sets. Each field is declared once, with unit, default and range:
 // the board's own in board_config.cpp, a module's next to its config struct (ekfParams(), stageParams(),
-// panelPoseParams(), markerCovarianceParams()), whose structs are held here as the module reads them (no
+// panelPoseParams(), markerCovarianceParams(), visionPipelineParams()), whose structs are held here as the module reads them (no
 // copies). The comments here only say what the group is for.
 struct BoardConfig {
   struct Loop {
@@ -77,29 +78,9 @@ struct BoardConfig {
     bool fuse_markers_in_stage2;  // false: the paper's T_L3 (stage 2 on VO and nav sensors alone)
     StageConfig machine;          // stage.min_workspace_time_s, min_faces_seen_fraction, stage2_without_panel
   } stage;
-  struct Vision {                 // the vision worker (vision/pipeline/vision_pipeline.h)
-    std::string vo_mode;          // adaptive | all | orb | planes | none
-    double quality_threshold;     // m_I below it: plane VO
-    double quality_hysteresis;
-    bool planes_when_orb_lost;    // adaptive: plane VO for a pair the ORB VO could not track
-    int orb_max_tracked;          // tracked ORB count scoring 1 in m_I
-    int orb_reset_after_lost_frames;  // new ORB map after this many lost pairs (0: never)
-    bool orb_motion_prior;        // ORB inliers arbitrated by the navigation's predicted motion
-    std::string dense_method;     // elas | sgbm | sgbm-wls
-    int dense_scale_down;         // 1 or 2
-    int dense_disparities;        // at the reduced size
-    bool filter_with_map;
-    double map_min_kept_fraction; // below it the view is outside the map: filter skipped
-    double planes_covariance_scale;  // multiplies the plane registration covariance
-    bool planes_partial;          // single-plane (2-axis) registrations become measurements
-    bool planes_subspace;         // degenerate plane sets give the directions they constrain
-    double planes_independent_points;  // cap on the independent stereo cells per plane (0: all)
-    double map_resolution_m;
-    double map_filter_distance_m;
-    int map_every_n_frames;
-    int map_min_frames;
-    int map_min_voxels;
-  } vision;
+  // The vision worker's own config (vision/pipeline/vision_pipeline_config.h): the vision.* keys land in it;
+  // visionConfig() (board/config/vehicle_setup.h) adds the image size, rig, markers and rectification.
+  VisionPipelineConfig vision;
   struct Sources {                // where `deepnav run` takes its inputs (board/service/README.md)
     std::string replay_path;      // recording played as the sensors, relative to the board file
     std::string dvl_serial;       // devices, checked by the board validation; empty: not fitted

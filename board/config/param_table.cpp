@@ -63,6 +63,12 @@ bool applyScalar(const ParamSpecView& p, const YAML::Node& n, const std::string&
       *static_cast<std::string*>(p.target) = v;
       return true;
     }
+    case ParamType::kEnum: {
+      const int index = paramChoiceIndex(p.choices, n.IsScalar() ? n.Scalar() : std::string());
+      if (index < 0) return fail(error, file, p, "is '" + show(n) + "'");
+      setParamEnumValue(p.target, index);
+      return true;
+    }
     case ParamType::kInt: {
       double v = 0;
       if (!parseNumber(n, &v) || std::floor(v) != v) return fail(error, file, p, "is '" + show(n) + "'");
@@ -208,6 +214,7 @@ std::string valueText(const ParamSpecView& p) {
       const auto& v = *static_cast<const std::string*>(p.target);
       return v.empty() ? "''" : v;
     }
+    case ParamType::kEnum: return paramChoiceAt(p.choices, paramEnumValue(p.target));
     case ParamType::kVec3: return listText(*static_cast<const Eigen::Vector3d*>(p.target));
     case ParamType::kRotation: {
       // [roll, pitch, yaw] of R = Rz(yaw) Ry(pitch) Rx(roll), as applyScalar composes it.
@@ -236,7 +243,9 @@ std::string describeParams(const std::vector<ParamSpecView>& params) {
   std::ostringstream s;
   s << "| key | type | unit | default | allowed | meaning |\n|---|---|---|---|---|---|\n";
   for (const auto& p : params) {
-    static const char* kTypes[] = {"bool", "int", "double", "string", "choice", "vec3", "rotation", "duration"};
+    // A kEnum is written as a choice: the file cannot tell them apart.
+    static const char* kTypes[] = {"bool", "int", "double", "string", "choice", "vec3", "rotation", "duration",
+                                   "choice"};
     const std::string default_text = p.default_text != nullptr ? p.default_text : valueText(p);
     s << "| `" << p.key << "` | " << kTypes[static_cast<int>(p.type)] << " | " << p.unit << " | `"
       << default_text << "` | " << markdownCell(rangeText(p)) << " | " << markdownCell(p.doc) << " |\n";

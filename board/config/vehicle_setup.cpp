@@ -79,49 +79,23 @@ bool setupFromMetadata(const std::map<std::string, std::string>* board, const st
 }
 
 VisionPipelineConfig visionConfig(const VehicleSetup& s) {
-  VisionPipelineConfig v;
-  v.width_px = s.config.camera.width_px;
-  v.height_px = s.config.camera.height_px;
+  VisionPipelineConfig v = s.config.vision;  // the vision.* keys
+  const BoardConfig::Camera& cam = s.config.camera;
+  v.width_px = cam.width_px;
+  v.height_px = cam.height_px;
+  v.channels = cam.channels;
   v.detect_markers = s.has_panel && s.config.markers.enabled;
   v.markers.dictionary = s.panel.dictionary;
   v.markers.marker_size_m = s.panel.marker_size_m;
-  v.markers.camera.fx_px = s.config.camera.fx_px;
-  v.markers.camera.fy_px = s.config.camera.fy_px;
-  v.markers.camera.cx_px = s.config.camera.cx_px;
-  v.markers.camera.cy_px = s.config.camera.cy_px;
-  const BoardConfig::Camera& cam = s.config.camera;
-  v.channels = cam.channels;
+  v.markers.camera.fx_px = cam.fx_px;
+  v.markers.camera.fy_px = cam.fy_px;
+  v.markers.camera.cx_px = cam.cx_px;
+  v.markers.camera.cy_px = cam.cy_px;
   v.rig.fx_px = cam.fx_px;
   v.rig.fy_px = cam.fy_px;
   v.rig.cx_px = cam.cx_px;
   v.rig.cy_px = cam.cy_px;
   v.rig.baseline_m = cam.baseline_m;
-  const BoardConfig::Vision& c = s.config.vision;
-  parseVoMode(c.vo_mode, &v.modality.mode);  // the table admits only the valid choices
-  v.modality.threshold = c.quality_threshold;
-  v.modality.hysteresis = c.quality_hysteresis;
-  v.modality.planes_when_orb_lost = c.planes_when_orb_lost;
-  v.orb_max_tracked = c.orb_max_tracked;
-  // After a gap of frames the view has moved on and relocalisation against the old keyframes can fail
-  // forever (fault_vision_test: no ORB result for the rest of the dive after 2 s of missing frames).
-  v.orb.reset_after_lost_frames = c.orb_reset_after_lost_frames;
-  v.orb.motion_prior.enabled = c.orb_motion_prior;
-  v.dense.method = c.dense_method == "sgbm"       ? DenseStereoMethod::kSgbm
-                   : c.dense_method == "sgbm-wls" ? DenseStereoMethod::kSgbmWls
-                                                  : DenseStereoMethod::kElas;
-  v.dense.scale_down = c.dense_scale_down;
-  v.dense.num_disparities = c.dense_disparities;
-  v.filter_with_map = c.filter_with_map;
-  v.map_min_kept_fraction = c.map_min_kept_fraction;
-  v.planes.registration.covariance_scale = c.planes_covariance_scale;
-  v.planes.use_partial = c.planes_partial;
-  v.planes.registration.subspace = c.planes_subspace;
-  v.planes.extraction.independent_points = c.planes_independent_points;
-  v.workspace.map.resolution_m = c.map_resolution_m;
-  v.workspace.map.filter_distance_m = c.map_filter_distance_m;
-  v.workspace.insert_every_n_frames = c.map_every_n_frames;
-  v.workspace.min_frames = c.map_min_frames;
-  v.workspace.min_voxels = c.map_min_voxels;
   v.clock_us = &monotonicUs;
   if (s.rectify) {
     v.rectify = true;

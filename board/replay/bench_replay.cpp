@@ -124,7 +124,7 @@ bool initRun(const ReplayOptions& o, const ReplayEventSource& reader, const Repl
   VisionPipelineConfig vision = visionConfig(run->setup);
   vision.stage_probe_for_test = o.vision_stage_probe;
   if (!run->vision.init(vision, error)) return false;
-  run->vision_off = !c.markers.enabled && c.vision.vo_mode == "none";
+  run->vision_off = !c.markers.enabled && c.vision.modality.mode == VoMode::kNone;
   run->context.init(robotFromCamera(run->setup));
   if (!run->core.init(run->setup, &run->sink, error)) return false;
   // A run of `deepnav run` that started from its saved workspace (service.state_dir): its stage machine

@@ -2,6 +2,8 @@
 // through that declaration into the module's own struct, and the module validates against the same
 // range, so a value the board refuses is one the module refuses too (and the reverse).
 #include "board/config/board_config.h"
+#include "board/config/vehicle_setup.h"
+#include "vision/pipeline/vision_pipeline.h"
 
 #include <algorithm>
 #include <cmath>
@@ -78,6 +80,7 @@ TEST(BoardModuleParams, TheBoardAndTheModuleRefuseTheSameValues) {
   expectOneRange<StageConfig>(stageParams(), kStageSection, validateStageConfig);
   expectOneRange<PanelPoseConfig>(panelPoseParams(), kMarkersSection, validatePanelPoseConfig);
   expectOneRange<MarkerCovarianceConfig>(markerCovarianceParams(), kMarkersSection, validateMarkerCovarianceConfig);
+  expectOneRange<VisionPipelineConfig>(visionPipelineParams(), kVisionSection, validateVisionPipelineConfig);
 }
 
 TEST(BoardModuleParams, GravityHasTheBoardsRangeInTheFilterToo) {
@@ -125,6 +128,88 @@ TEST(BoardModuleParams, DefaultsAreTheModulesInitialisersBarTheBoardsOwn) {
   EXPECT_NE(table.find("| `ekf.gravity_mps2` | double | m/s^2 | `9.80665` | a number in [9.7, 9.9] |"),
             std::string::npos);
   EXPECT_NE(table.find("| `ekf.dvl_rotation_deg` | rotation | deg | `[0, 0, 0]` |"), std::string::npos);
+}
+
+TEST(BoardModuleParams, VisionKeysLandInThePipelineConfigTheWorkerRuns) {
+  // GIVEN a board setting vision keys of each kind (the two choices land in enums)
+  const std::string yaml =
+      "vision:\n  vo_mode: none\n  dense_method: sgbm-wls\n  quality_hysteresis: 0.1\n  orb_max_tracked: 250\n"
+      "  orb_motion_prior: true\n  planes_covariance_scale: 50\n  map_every_n_frames: 3\n";
+  VehicleSetup setup;
+  std::string error;
+  ASSERT_TRUE(parseVehicleSetup(yaml, "", "board.yaml", &setup, &error)) << error;
+  // THEN the board holds them in the pipeline's own struct and the worker's config carries them as they are
+  const VisionPipelineConfig v = visionConfig(setup);
+  EXPECT_EQ(v.modality.mode, VoMode::kNone);
+  EXPECT_EQ(v.dense.method, DenseStereoMethod::kSgbmWls);
+  EXPECT_EQ(v.modality.hysteresis, 0.1);
+  EXPECT_EQ(v.orb_max_tracked, 250);
+  EXPECT_TRUE(v.orb.motion_prior.enabled);
+  EXPECT_EQ(v.planes.registration.covariance_scale, 50.0);
+  EXPECT_EQ(v.workspace.insert_every_n_frames, 3);
+  // AND what the board does not set is the board's default
+  EXPECT_EQ(v.orb.reset_after_lost_frames, 10);
+  EXPECT_EQ(v.dense.num_disparities, 128);
+  // AND the camera keys fill the image size and the rig
+  EXPECT_EQ(v.width_px, setup.config.camera.width_px);
+  EXPECT_EQ(v.rig.baseline_m, setup.config.camera.baseline_m);
+}
+
+TEST(BoardModuleParams, VisionChoicesAreTheEnumsInOrder) {
+  // The choices of vision.vo_mode and vision.dense_method are positions in VoMode and DenseStereoMethod.
+  for (int i = 0; i <= static_cast<int>(VoMode::kNone); ++i) {
+    const std::string name = toString(static_cast<VoMode>(i));
+    BoardConfig c{};
+    std::string error;
+    ASSERT_TRUE(loadBoardConfigText("vision:\n  vo_mode: " + name + "\n", "board.yaml", &c, &error)) << error;
+    EXPECT_EQ(c.vision.modality.mode, static_cast<VoMode>(i)) << name;
+  }
+  EXPECT_EQ(denseStereoMethodName(DenseStereoMethod::kElas), "elas");
+  EXPECT_EQ(denseStereoMethodName(DenseStereoMethod::kSgbm), "sgbm");
+  EXPECT_EQ(denseStereoMethodName(DenseStereoMethod::kSgbmWls), "sgbm-wls");
+  // A value that is none of them is refused as before, naming the key and the choices
+  BoardConfig c{};
+  std::string error;
+  EXPECT_FALSE(loadBoardConfigText("vision:\n  vo_mode: fastest\n", "board.yaml", &c, &error));
+  EXPECT_EQ(error, "board.yaml: key 'vision.vo_mode' is 'fastest'; allowed: one of adaptive|all|orb|planes|none (-)");
+  EXPECT_FALSE(loadBoardConfigText("vision:\n  dense_method: [elas]\n", "board.yaml", &c, &error));
+  EXPECT_NE(error.find("key 'vision.dense_method'"), std::string::npos) << error;
+}
+
+TEST(BoardModuleParams, ThePipelineRefusesWhatTheBoardRefuses) {
+  // GIVEN a pipeline config built in code with a hysteresis the board never accepted ((0.49, 0.5))
+  VisionPipelineConfig c;
+  c.run_orb = false;
+  c.modality.hysteresis = 0.495;
+  VisionPipeline pipeline;
+  std::string error;
+  // THEN the worker refuses it with the board's range
+  EXPECT_FALSE(pipeline.init(c, &error));
+  EXPECT_EQ(error,
+            "VisionPipelineConfig.modality.hysteresis (vision.quality_hysteresis): must be a number in [0, 0.49] (-)");
+  // AND an enum outside its choices is refused too
+  c.modality.hysteresis = 0.02;
+  c.dense.method = static_cast<DenseStereoMethod>(7);
+  EXPECT_FALSE(validateVisionPipelineConfig(c, &error));
+  EXPECT_NE(error.find("(vision.dense_method)"), std::string::npos) << error;
+}
+
+TEST(BoardModuleParams, VisionDefaultsAreTheInitialisersBarTheBoardsOwn) {
+  const BoardConfig c = defaultBoardConfig();
+  const VisionPipelineConfig bare;
+  EXPECT_EQ(c.vision.modality.mode, bare.modality.mode);
+  EXPECT_EQ(c.vision.modality.threshold, bare.modality.threshold);
+  EXPECT_EQ(c.vision.workspace.map.filter_distance_m, bare.workspace.map.filter_distance_m);
+  // The two a vehicle sets apart from the bare pipeline: a new ORB map after 10 lost pairs, the plane
+  // registration covariance scaled for correlated stereo errors.
+  EXPECT_EQ(bare.orb.reset_after_lost_frames, 0);
+  EXPECT_EQ(c.vision.orb.reset_after_lost_frames, 10);
+  EXPECT_EQ(bare.planes.registration.covariance_scale, 1.0);
+  EXPECT_EQ(c.vision.planes.registration.covariance_scale, 1000.0);
+  const std::string table = describeBoardParams();
+  EXPECT_NE(table.find("| `vision.vo_mode` | choice | - | `adaptive` | one of adaptive\\|all\\|orb\\|planes\\|none |"),
+            std::string::npos);
+  EXPECT_NE(table.find("| `vision.planes_covariance_scale` | double | - | `1000` |"), std::string::npos);
 }
 
 }  // namespace

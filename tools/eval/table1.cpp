@@ -481,7 +481,9 @@ bool runTable1(const std::string& path, const Table1Options& options, Table1Resu
     ev->csv << "row,t_s,matched,rotation_dims,translation_dims,dof,nees,rot_err_deg,trans_err_m,rot_sigma_deg,"
                "trans_sigma_m,true_turn_deg,true_move_m,fitted_cells\n";
   }
-  if (ev->options.map_every <= 0) ev->options.map_every = std::max(1, setup.config.vision.map_every_n_frames);
+  if (ev->options.map_every <= 0) {
+    ev->options.map_every = std::max(1, setup.config.vision.workspace.insert_every_n_frames);
+  }
   if (!ev->init(setup, error)) return false;
   result->options.map_every = ev->options.map_every;
   result->options.num_disparities = ev->num_disparities;

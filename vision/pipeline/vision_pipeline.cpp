@@ -40,6 +40,8 @@ bool VisionPipeline::init(const VisionPipelineConfig& config, std::string* error
     if (error) *error = "vision: image size must be positive";
     return false;
   }
+  // The board's keys have the ranges declared in visionPipelineParams(); a config built in code too.
+  if (!validateVisionPipelineConfig(config, error)) return false;
   config_ = config;
   config_.rig.width_px = config.width_px;
   config_.rig.height_px = config.height_px;
@@ -62,10 +64,6 @@ bool VisionPipeline::init(const VisionPipelineConfig& config, std::string* error
   }
   if (config.detect_markers && !detector_.init(config.markers, error)) return false;
   if (config.run_orb && !orb_.init(config.orb, config_.rig, error)) return false;
-  if (config.orb_max_tracked < 1) {
-    if (error) *error = "vision.orb_max_tracked must be >= 1";
-    return false;
-  }
   return selector_.init(config.modality, error) &&
          dense_.init(config_.dense, geometryOf(config_.rig), config.width_px, config.height_px, error) &&
          dense_.allocateCloud(&cloud_) && dense_.allocateCloud(&unfiltered_) &&

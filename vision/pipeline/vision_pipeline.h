@@ -14,18 +14,12 @@
 #include "vision/orbvo/stereo_rig.h"
 #include "vision/pipeline/modality_selector.h"
 #include "vision/pipeline/vision_context.h"
+#include "vision/pipeline/vision_pipeline_config.h"
 #include "vision/pipeline/workspace_model.h"
 #include "vision/planes/plane_odometry.h"
 #include "vision/types/stereo_frame.h"
 
 namespace deepnav {
-
-// Monotonic clock (us) for the per-part timing statistics; board/ supplies it.
-using VisionClockUs = TimeUs (*)();
-
-// The parts of the per-pair processing whose library calls (OpenCV above all) may throw.
-enum class VisionStage : int { kRectify, kQuality, kMarkers, kOrb, kWorkspace, kStage2, kCount };
-const char* visionStageName(VisionStage stage);
 
 // Why the last failed pair failed: its stage and the exception's message (truncated), kept in place so
 // that recording it allocates nothing.
@@ -33,36 +27,6 @@ struct VisionStageFailure {
   VisionStage stage = VisionStage::kCount;
   std::uint64_t sequence = 0;  // of the pair
   char what[160] = {};
-};
-
-struct VisionPipelineConfig {
-  int width_px = 688;
-  int height_px = 516;
-  int channels = 1;
-  // Raw frames (rectified = false) are remapped with these maps, built once at start-up by board/ (plain
-  // pinhole or PinAx), before anything else runs; markers, rig and dense must then hold the rectified
-  // intrinsics (rectification.rectified, baseline_m). Frames that arrive rectified are used as they are;
-  // without maps every frame is taken as rectified with the rig's intrinsics (the board names no
-  // calibration: the cameras deliver rectified images, whatever the driver marks them).
-  bool rectify = false;
-  StereoRectification rectification;
-  bool detect_markers = false;   // when the vehicle has a panel description
-  MarkerDetectorConfig markers;  // dictionary, marker size, rectified intrinsics
-  StereoRig rig;                 // rectified intrinsics and baseline
-  bool run_orb = true;           // ORB tracking on every pair (its count is part of m_I)
-  OrbVoConfig orb;
-  int orb_max_tracked = 300;     // tracked count that scores 1 in m_I
-  ModalityConfig modality;
-  StereoCloudConfig dense;       // dense stereo of the map and the plane VO
-  bool filter_with_map = true;   // stage 2: the plane VO's cloud keeps only points near the map
-  // ... unless fewer than this fraction would be kept: the view is then outside the mapped workspace.
-  double map_min_kept_fraction = 0.3;
-  PlaneOdometryConfig planes;
-  WorkspaceBuildConfig workspace;
-  VisionClockUs clock_us = nullptr;  // per-part timing in VisionResult; nullptr: zeros
-  // Tests only: called at the start of every stage of every pair (inside its guard), to make a stage
-  // throw as a library would. nullptr on the vehicle.
-  void (*stage_probe_for_test)(VisionStage stage) = nullptr;
 };
 
 // Per-stereo-pair processing of the vision worker, the paper's method on one pair:
