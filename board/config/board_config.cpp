@@ -13,7 +13,7 @@ using P = ParamSpec<BoardConfig>;
 
 #define DEEPNAV_FIELD(expr) [](BoardConfig& c) -> void* { return &c.expr; }
 
-// Up to the markers' own keys (the panel pose estimator's and the marker covariance model's follow).
+// Up to the camera port's keys (the port's and the PinAx mapping's follow).
 const std::array kBoardHeadParams = {
     P{"loop.rate_hz", ParamType::kInt, "Hz", 10, 1000, "100", "", "nav loop tick rate",
       DEEPNAV_FIELD(loop.rate_hz)},
@@ -86,21 +86,10 @@ const std::array kBoardHeadParams = {
     P{"camera.port.model", ParamType::kChoice, "-", 0, 0, "none", "none|flat",
       "refraction correction: none (in-air, dome port or in-water calibration) or flat (PinAx, in-air calibration)",
       DEEPNAV_FIELD(camera.port.model)},
-    P{"camera.port.pinhole_to_glass_m", ParamType::kDouble, "m", 0, 0.5, "0.0", "",
-      "flat port: distance from the pinhole (entrance pupil) to the inner glass surface, d0",
-      DEEPNAV_FIELD(camera.port.pinhole_to_glass_m)},
-    P{"camera.port.glass_thickness_m", ParamType::kDouble, "m", 0, 0.2, "0.0", "", "flat port: glass thickness, d1",
-      DEEPNAV_FIELD(camera.port.glass_thickness_m)},
-    P{"camera.port.n_air", ParamType::kDouble, "-", 1, 2, "1.0", "", "flat port: refractive index inside the housing",
-      DEEPNAV_FIELD(camera.port.n_air)},
-    P{"camera.port.n_glass", ParamType::kDouble, "-", 1, 3, "1.49", "",
-      "flat port: refractive index of the glass (acrylic 1.49, BK7 1.52, sapphire 1.77)",
-      DEEPNAV_FIELD(camera.port.n_glass)},
-    P{"camera.port.n_water", ParamType::kDouble, "-", 1, 2, "1.34", "", "flat port: refractive index of the water",
-      DEEPNAV_FIELD(camera.port.n_water)},
-    P{"camera.port.reference_distance_m", ParamType::kDouble, "m", 0.2, 50, "2.0", "",
-      "flat port: distance at which the PinAx mapping is exact (middle of the working range)",
-      DEEPNAV_FIELD(camera.port.reference_distance_m)},
+};
+
+// Between the port's keys (flatPortParams(), pinaxParams()) and the markers' own.
+const std::array kCameraSourceParams = {
     P{"camera.driver", ParamType::kChoice, "-", 0, 0, "none", "none|aravis|v4l2",
       "live stereo camera driver (drivers/camera); none: frames come only from a replay", DEEPNAV_FIELD(camera.source.driver)},
     P{"camera.left", ParamType::kString, "-", 0, 0, "''", "",
@@ -300,6 +289,10 @@ constexpr BoardDefault kBoardDefaults[] = {{"vision.orb_reset_after_lost_frames"
 // Every key of a board file, in the order `deepnav config --list` prints them, bound to `c`.
 std::vector<ParamSpecView> boardParams(BoardConfig& c) {
   std::vector<ParamSpecView> views = bindParams(kBoardHeadParams, c);
+  appendModuleParams(flatPortParams(), kCameraPortSection, c.camera.port.pinax.port, &views);
+  appendModuleParams(pinaxParams(), kCameraPortSection, c.camera.port.pinax, &views);
+  const std::vector<ParamSpecView> source = bindParams(kCameraSourceParams, c);
+  views.insert(views.end(), source.begin(), source.end());
   appendModuleParams(panelPoseParams(), kMarkersSection, c.markers.panel_pose, &views);
   appendModuleParams(markerCovarianceParams(), kMarkersSection, c.markers.covariance, &views);
   const std::vector<ParamSpecView> stage = bindParams(kStageBoardParams, c);
@@ -318,7 +311,8 @@ std::vector<ParamSpecView> boardParams(BoardConfig& c) {
 }
 
 // The module configs' own checks: their declared ranges (which the file's keys already passed) and the
-// rules between fields.
+// rules between fields. The camera port's (validatePinaxConfig) runs where the port is used, when the
+// rectification is built with camera.port.model flat: a board that does not use the port is not refused.
 bool validateModules(const BoardConfig& c, std::string* error) {
   return validateEkfConfig(c.ekf, error) && validateStageConfig(c.stage.machine, error) &&
          validatePanelPoseConfig(c.markers.panel_pose, error) &&

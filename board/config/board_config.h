@@ -10,6 +10,7 @@
 #include "nav/markers/marker_pose_covariance.h"
 #include "nav/markers/panel_pose_config.h"
 #include "nav/stage/stage_config.h"
+#include "vision/calib/pinax_model.h"
 #include "vision/pipeline/vision_pipeline_config.h"
 
 #include <Eigen/Geometry>
@@ -18,7 +19,7 @@ namespace deepnav {
 
 // Everything one vehicle's board.yaml sets. Each field is declared once, with unit, default and range:
 // the board's own in board_config.cpp, a module's next to its config struct (ekfParams(), stageParams(),
-// panelPoseParams(), markerCovarianceParams(), visionPipelineParams()), whose structs are held here as the module reads them (no
+// panelPoseParams(), markerCovarianceParams(), flatPortParams(), pinaxParams(), visionPipelineParams()), whose structs are held here as the module reads them (no
 // copies). The comments here only say what the group is for.
 struct BoardConfig {
   struct Loop {
@@ -58,12 +59,7 @@ struct BoardConfig {
     std::string calibration_file;      // stereo calibration of the raw images (OpenCV YAML); empty: rectified
     struct Port {                      // flat port in front of each camera (vision/calib/flat_port.h)
       std::string model;               // none | flat
-      double pinhole_to_glass_m;
-      double glass_thickness_m;
-      double n_air;
-      double n_glass;
-      double n_water;
-      double reference_distance_m;     // PinAx mapping exact at this distance
+      PinaxConfig pinax;               // the rectification's: the port's d0, d1, indices and reference distance
     } port;
     CameraSourceConfig source;         // the live stereo driver (drivers/camera): camera.driver, left, ...
   } camera;

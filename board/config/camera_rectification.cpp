@@ -11,12 +11,7 @@ RectificationOptions rectificationOptions(const BoardConfig& config) {
   RectificationOptions o;
   const auto& port = config.camera.port;
   o.correction = port.model == "flat" ? PortCorrection::kPinax : PortCorrection::kNone;
-  o.pinax.port.pinhole_to_glass_m = port.pinhole_to_glass_m;
-  o.pinax.port.glass_thickness_m = port.glass_thickness_m;
-  o.pinax.port.n_air = port.n_air;
-  o.pinax.port.n_glass = port.n_glass;
-  o.pinax.port.n_water = port.n_water;
-  o.pinax.reference_distance_m = port.reference_distance_m;
+  o.pinax = port.pinax;
   return o;
 }
 

@@ -2,6 +2,7 @@
 // through that declaration into the module's own struct, and the module validates against the same
 // range, so a value the board refuses is one the module refuses too (and the reverse).
 #include "board/config/board_config.h"
+#include "board/config/camera_rectification.h"
 #include "board/config/vehicle_setup.h"
 #include "vision/pipeline/vision_pipeline.h"
 
@@ -34,6 +35,20 @@ std::vector<std::string> outsideValues(ParamType type, double min, double max) {
   return out;
 }
 
+// "a.b" and "k", "v" as a board file nests them: "a:\n  b:\n    k: v\n".
+std::string nestedYaml(const std::string& section, const std::string& key, const std::string& value) {
+  std::string yaml;
+  std::string indent;
+  std::size_t begin = 0;
+  for (std::size_t dot = section.find('.');; dot = section.find('.', begin)) {
+    yaml += indent + section.substr(begin, dot == std::string::npos ? std::string::npos : dot - begin) + ":\n";
+    indent += "  ";
+    if (dot == std::string::npos) break;
+    begin = dot + 1;
+  }
+  return yaml + indent + key + ": " + value + "\n";
+}
+
 // Sets the field a declaration lands in from the same number (seconds for a duration).
 template <typename Config>
 void setField(const ParamDecl<Config>& d, Config* c, double v) {
@@ -60,7 +75,7 @@ void expectOneRange(std::span<const ParamDecl<Config>> decls, const char* sectio
       // WHEN the board file sets the key outside its range THEN the board refuses it, naming the key
       BoardConfig board{};
       std::string error;
-      const std::string yaml = std::string(section) + ":\n  " + d.key + ": " + v + "\n";
+      const std::string yaml = nestedYaml(section, d.key, v);
       EXPECT_FALSE(loadBoardConfigText(yaml, "board.yaml", &board, &error)) << yaml;
       EXPECT_NE(error.find("'" + key + "'"), std::string::npos) << error;
       // AND the module, given the same value directly, refuses it too, naming its field and the key
@@ -81,6 +96,34 @@ TEST(BoardModuleParams, TheBoardAndTheModuleRefuseTheSameValues) {
   expectOneRange<PanelPoseConfig>(panelPoseParams(), kMarkersSection, validatePanelPoseConfig);
   expectOneRange<MarkerCovarianceConfig>(markerCovarianceParams(), kMarkersSection, validateMarkerCovarianceConfig);
   expectOneRange<VisionPipelineConfig>(visionPipelineParams(), kVisionSection, validateVisionPipelineConfig);
+  expectOneRange<FlatPort>(flatPortParams(), kCameraPortSection, validateFlatPort);
+  expectOneRange<PinaxConfig>(pinaxParams(), kCameraPortSection, validatePinaxConfig);
+}
+
+TEST(BoardModuleParams, CameraPortKeysLandInThePinaxConfigTheRectificationUses) {
+  const std::string yaml =
+      "camera:\n  port:\n    model: flat\n    pinhole_to_glass_m: 0.008\n    glass_thickness_m: 0.012\n"
+      "    n_glass: 1.52\n    reference_distance_m: 1.5\n";
+  BoardConfig c{};
+  std::string error;
+  ASSERT_TRUE(loadBoardConfigText(yaml, "board.yaml", &c, &error)) << error;
+  EXPECT_EQ(c.camera.port.pinax.port.pinhole_to_glass_m, 0.008);
+  EXPECT_EQ(c.camera.port.pinax.port.glass_thickness_m, 0.012);
+  EXPECT_EQ(c.camera.port.pinax.port.n_glass, 1.52);
+  EXPECT_EQ(c.camera.port.pinax.reference_distance_m, 1.5);
+  const RectificationOptions o = rectificationOptions(c);
+  EXPECT_EQ(o.correction, PortCorrection::kPinax);
+  EXPECT_EQ(o.pinax.port, c.camera.port.pinax.port);
+  EXPECT_EQ(o.pinax.reference_distance_m, 1.5);
+  // The defaults are the port's and the mapping's initialisers
+  const BoardConfig d = defaultBoardConfig();
+  EXPECT_EQ(d.camera.port.pinax.port, FlatPort{});
+  EXPECT_EQ(d.camera.port.pinax.reference_distance_m, PinaxConfig{}.reference_distance_m);
+  // AND the rule between two of them stays the port's: water denser than the housing's air
+  FlatPort port;
+  port.n_water = port.n_air;
+  EXPECT_FALSE(validateFlatPort(port, &error));
+  EXPECT_NE(error.find("n_water"), std::string::npos) << error;
 }
 
 TEST(BoardModuleParams, GravityHasTheBoardsRangeInTheFilterToo) {

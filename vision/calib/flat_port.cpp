@@ -1,9 +1,27 @@
 #include "vision/calib/flat_port.h"
 
+#include <array>
 #include <cmath>
 
 namespace deepnav {
 namespace {
+
+using D = ParamDecl<FlatPort>;
+
+const std::array kFlatPortParams = {
+    D{"pinhole_to_glass_m", ParamType::kDouble, "m", 0, 0.5, "",
+      "flat port: distance from the pinhole (entrance pupil) to the inner glass surface, d0",
+      DEEPNAV_PARAM_FIELD(FlatPort, pinhole_to_glass_m)},
+    D{"glass_thickness_m", ParamType::kDouble, "m", 0, 0.2, "", "flat port: glass thickness, d1",
+      DEEPNAV_PARAM_FIELD(FlatPort, glass_thickness_m)},
+    D{"n_air", ParamType::kDouble, "-", 1, 2, "", "flat port: refractive index inside the housing",
+      DEEPNAV_PARAM_FIELD(FlatPort, n_air)},
+    D{"n_glass", ParamType::kDouble, "-", 1, 3, "",
+      "flat port: refractive index of the glass (acrylic 1.49, BK7 1.52, sapphire 1.77)",
+      DEEPNAV_PARAM_FIELD(FlatPort, n_glass)},
+    D{"n_water", ParamType::kDouble, "-", 1, 2, "", "flat port: refractive index of the water",
+      DEEPNAV_PARAM_FIELD(FlatPort, n_water)},
+};
 
 // tan of the angle whose sine is s (|s| < 1).
 double tanFromSin(double s) { return s / std::sqrt(1.0 - s * s); }
@@ -16,18 +34,14 @@ double dTanFromSin(double s) {
 
 }  // namespace
 
+std::span<const ParamDecl<FlatPort>> flatPortParams() { return kFlatPortParams; }
+
 bool validateFlatPort(const FlatPort& p, std::string* error) {
-  auto fail = [&](const char* what) {
-    if (error) *error = what;
+  if (!checkParamRanges(flatPortParams(), p, "FlatPort", kCameraPortSection, error)) return false;
+  if (!(p.n_water > p.n_air)) {
+    if (error) *error = "n_water must be above n_air";
     return false;
-  };
-  if (!(p.pinhole_to_glass_m >= 0.0 && p.pinhole_to_glass_m < 1.0))
-    return fail("pinhole_to_glass_m must be in [0, 1) m");
-  if (!(p.glass_thickness_m >= 0.0 && p.glass_thickness_m < 0.5))
-    return fail("glass_thickness_m must be in [0, 0.5) m");
-  if (!(p.n_air >= 1.0 && p.n_air < 3.0)) return fail("n_air must be in [1, 3)");
-  if (!(p.n_glass >= 1.0 && p.n_glass < 3.0)) return fail("n_glass must be in [1, 3)");
-  if (!(p.n_water > p.n_air && p.n_water < 3.0)) return fail("n_water must be above n_air and below 3");
+  }
   return true;
 }
 

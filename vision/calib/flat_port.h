@@ -1,7 +1,10 @@
 #pragma once
+#include <span>
 #include <string>
 
 #include <Eigen/Core>
+
+#include "base/param_decl.h"
 
 namespace deepnav {
 
@@ -19,8 +22,13 @@ struct FlatPort {
   bool operator==(const FlatPort&) const = default;
 };
 
-// False with a message naming the field when a parameter is non-physical (negative lengths, indices < 1,
-// water not denser than air).
+// The board keys of the port (section kCameraPortSection of a board file): unit, range and meaning,
+// declared once; the defaults are the initialisers above.
+inline constexpr const char* kCameraPortSection = "camera.port";
+std::span<const ParamDecl<FlatPort>> flatPortParams();
+
+// False with a message naming the field when a parameter is outside its declared range or the water is
+// not denser than the air.
 bool validateFlatPort(const FlatPort& port, std::string* error);
 
 // Vector form of Snell's law: refracts the unit direction `incident` at a surface of unit normal

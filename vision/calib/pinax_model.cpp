@@ -1,12 +1,29 @@
 #include "vision/calib/pinax_model.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
 #include <opencv2/calib3d.hpp>
 
 namespace deepnav {
+namespace {
+
+const std::array kPinaxParams = {
+    ParamDecl<PinaxConfig>{"reference_distance_m", ParamType::kDouble, "m", 0.2, 50, "",
+                           "flat port: distance at which the PinAx mapping is exact (middle of the working range)",
+                           DEEPNAV_PARAM_FIELD(PinaxConfig, reference_distance_m)},
+};
+
+}  // namespace
+
+std::span<const ParamDecl<PinaxConfig>> pinaxParams() { return kPinaxParams; }
+
+bool validatePinaxConfig(const PinaxConfig& c, std::string* error) {
+  return validateFlatPort(c.port, error) &&
+         checkParamRanges(pinaxParams(), c, "PinaxConfig", kCameraPortSection, error);
+}
 
 double pinaxVirtualCentreZ(const FlatPort& port, double max_theta_air_rad) {
   // The crossing is monotonic in the angle only near d0*, so sample the whole range.

@@ -1,4 +1,7 @@
 #pragma once
+#include <span>
+#include <string>
+
 #include <opencv2/core.hpp>
 #include <Eigen/Core>
 
@@ -17,6 +20,14 @@ struct PinaxConfig {
   FlatPort port;
   double reference_distance_m = 2.0;  // along the axis from the real pinhole, in water
 };
+
+// The board key of the mapping (section kCameraPortSection, beside the port's own flatPortParams()): unit,
+// range and meaning, declared once; the default is the initialiser above.
+std::span<const ParamDecl<PinaxConfig>> pinaxParams();
+
+// False with a message naming the field when the port or the reference distance is outside its declared
+// range.
+bool validatePinaxConfig(const PinaxConfig& config, std::string* error);
 
 // z of the virtual pinhole in the real camera frame: the middle of the spread of axis crossings of the
 // rays up to max_theta_air_rad (the widest ray of the image), which halves the worst error compared with

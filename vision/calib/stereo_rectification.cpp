@@ -76,7 +76,7 @@ bool computeStereoRectification(const StereoCalibration& calib, const Rectificat
     out->virtual_centre_z_m = 0.0;
   } else {
     std::string port_error;
-    if (!validateFlatPort(options.pinax.port, &port_error)) {
+    if (!validatePinaxConfig(options.pinax, &port_error)) {
       if (error) *error = "flat port: " + port_error;
       return false;
     }
