@@ -1,7 +1,6 @@
 #include "vision/cloud/stereo_cloud.h"
 
-#include <opencv2/imgproc.hpp>
-
+#include "vision/cloud/area_halving.h"
 #include "vision/stereo/elas_disparity.h"
 #include "vision/stereo/sgbm_disparity.h"
 
@@ -74,9 +73,7 @@ bool StereoCloud::reduce(const cv::Mat& full, cv::Mat* reduced) const {
     *reduced = full;
     return true;
   }
-  if (full.type() != reduced->type()) return false;
-  cv::resize(full, *reduced, reduced->size(), 0.0, 0.0, cv::INTER_AREA);
-  return true;
+  return halveByArea(full, reduced);  // scale_down is 1 or 2 (init)
 }
 
 bool StereoCloud::compute(const cv::Mat& left, const cv::Mat& right, OrganizedCloud* cloud) {
