@@ -15,6 +15,8 @@
 #include "board/config/camera_rectification.h"
 #include "board/config/stereo_calibration_file.h"
 #include "tools/sim/calib/charuco_images.h"
+#include "tests/support/source_paths.h"
+#include "tests/support/temp_path.h"
 
 namespace deepnav {
 namespace {
@@ -30,8 +32,8 @@ struct CliRun {
 };
 
 CliRun runDeepnav(const std::string& args) {
-  const std::string log = ::testing::TempDir() + "calibrate_cli_output_" + std::to_string(getpid()) + ".txt";
-  const std::string cmd = std::string(DEEPNAV_BIN_DIR) + "/deepnav " + args + " > " + log + " 2>&1";
+  const std::string log = deepnav::testing::tempPath("calibrate_cli_output.txt");
+  const std::string cmd = deepnav::testing::binDir() + "/deepnav " + args + " > " + log + " 2>&1";
   CliRun r;
   const int status = std::system(cmd.c_str());
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -47,7 +49,7 @@ class CalibrateCli : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
     // ctest runs each case in its own process, in parallel: one folder per process.
-    dir_ = new fs::path(fs::path(::testing::TempDir()) / ("calibrate_cli_" + std::to_string(getpid())));
+    dir_ = new fs::path(deepnav::testing::tempPath("calibrate_cli"));
     fs::remove_all(*dir_);
     fs::create_directories(*dir_ / "images");
     sim::CharucoImageRenderer renderer;

@@ -15,6 +15,7 @@
 #include "vision/calib/stereo_rectification.h"
 #include "vision/markers/marker_detector.h"
 #include "vision/stereo/elas_disparity.h"
+#include "tests/support/source_paths.h"
 
 namespace deepnav {
 namespace {
@@ -51,7 +52,7 @@ class CalibratePortBias : public ::testing::Test {
  protected:
   void SetUp() override {
     std::string error;
-    ASSERT_TRUE(sim::loadScenario(std::string(DEEPNAV_SOURCE_DIR) + "/tools/sim/scenarios/default.yaml", &scenario_,
+    ASSERT_TRUE(sim::loadScenario(deepnav::testing::sourceDir() + "/tools/sim/scenarios/default.yaml", &scenario_,
                                   &error))
         << error;
     camera_ = scenario_.camera;

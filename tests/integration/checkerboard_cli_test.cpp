@@ -15,6 +15,8 @@
 #include "board/config/board_config.h"
 #include "board/config/camera_rectification.h"
 #include "board/config/stereo_calibration_file.h"
+#include "tests/support/source_paths.h"
+#include "tests/support/temp_path.h"
 
 namespace deepnav {
 namespace {
@@ -29,8 +31,8 @@ struct CliRun {
 };
 
 CliRun runDeepnav(const std::string& args) {
-  const std::string log = ::testing::TempDir() + "checkerboard_cli_output_" + std::to_string(getpid()) + ".txt";
-  const std::string cmd = std::string(DEEPNAV_BIN_DIR) + "/deepnav " + args + " > " + log + " 2>&1";
+  const std::string log = deepnav::testing::tempPath("checkerboard_cli_output.txt");
+  const std::string cmd = deepnav::testing::binDir() + "/deepnav " + args + " > " + log + " 2>&1";
   CliRun r;
   const int status = std::system(cmd.c_str());
   r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -43,7 +45,7 @@ CliRun runDeepnav(const std::string& args) {
 }
 
 fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::path(::testing::TempDir()) / ("checkerboard_cli_" + std::to_string(getpid()));
+  const fs::path dir = fs::path(deepnav::testing::tempPath("checkerboard_cli"));
   fs::create_directories(dir);
   return dir / name;
 }

@@ -14,6 +14,7 @@
 #include "board/replay/bench_replay.h"
 #include "drivers/replay/recording_reader.h"
 #include "tests/support/test_dive.h"
+#include "tests/support/source_paths.h"
 
 namespace deepnav {
 namespace {
@@ -24,7 +25,7 @@ pid_t startRealtimeReplay(const std::string& dive, const std::string& out) {
     const int devnull = open("/dev/null", O_WRONLY);
     dup2(devnull, STDOUT_FILENO);
     dup2(devnull, STDERR_FILENO);
-    const std::string exe = std::string(DEEPNAV_BIN_DIR) + "/deepnav";
+    const std::string exe = deepnav::testing::binDir() + "/deepnav";
     execl(exe.c_str(), "deepnav", "replay", dive.c_str(), "--out", out.c_str(), "--realtime", nullptr);
     _exit(127);
   }

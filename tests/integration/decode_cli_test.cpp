@@ -16,6 +16,8 @@
 #include <yaml-cpp/yaml.h>
 
 #include "tests/support/sensor_frames.h"
+#include "tests/support/source_paths.h"
+#include "tests/support/temp_path.h"
 
 namespace deepnav {
 namespace {
@@ -27,11 +29,10 @@ struct DecodeRun {
 };
 
 DecodeRun decode(const std::string& format, const std::string& file) {
-  const std::string dir = ::testing::TempDir();
-  // ctest runs each test case in its own process, in parallel: names carry the process id and format.
-  const std::string tag = std::to_string(::getpid()) + "_" + format;
-  const std::string out = dir + "decode_out_" + tag + ".jsonl", err = dir + "decode_err_" + tag + ".txt";
-  const std::string cmd = std::string(DEEPNAV_BIN_DIR) + "/deepnav decode " + format + " " + file + " > " + out + " 2> " + err;
+  // ctest runs each test case in its own process, in parallel: names are per process and format.
+  const std::string out = deepnav::testing::tempPath("decode_out_" + format + ".jsonl");
+  const std::string err = deepnav::testing::tempPath("decode_err_" + format + ".txt");
+  const std::string cmd = deepnav::testing::binDir() + "/deepnav decode " + format + " " + file + " > " + out + " 2> " + err;
   DecodeRun r;
   r.status = std::system(cmd.c_str());
   std::ifstream o(out);
@@ -48,7 +49,7 @@ std::filesystem::path shared() {
 }
 
 std::string writeTemp(const std::string& name, const std::string& bytes) {
-  const std::string path = ::testing::TempDir() + std::to_string(::getpid()) + "_" + name;
+  const std::string path = deepnav::testing::tempPath(name);
   std::ofstream(path, std::ios::binary) << bytes;
   return path;
 }
@@ -249,7 +250,7 @@ TEST(DecodeCli, RealCandumpWithAStrayByteBeforeEveryThirdLine) {
 // A run of start characters (each one a frame cut short) gives a bounded stderr: the first bad frames
 // one line each, then one line per byte range, and the exact count in the summary.
 TEST(DecodeCli, TenMegabytesOfNoiseGiveABoundedReport) {
-  const std::string path = ::testing::TempDir() + std::to_string(::getpid()) + "_noise";
+  const std::string path = deepnav::testing::tempPath("noise");
   for (const auto& [format, byte] : {std::pair{"nmea0183", '$'}, {"pd6", ':'}, {"pd0", '\x7f'}, {"xsens", '\xfa'}}) {
     std::ofstream(path, std::ios::binary) << std::string(10 << 20, byte);
     const DecodeRun r = decode(format, path);

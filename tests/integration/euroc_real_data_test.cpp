@@ -28,6 +28,8 @@
 #include "board/replay/bench_replay.h"
 #include "drivers/replay/recording_reader.h"
 #include "vision/stereo/elas_disparity.h"
+#include "tests/support/source_paths.h"
+#include "tests/support/temp_path.h"
 
 namespace deepnav {
 namespace {
@@ -36,10 +38,10 @@ namespace fs = std::filesystem;
 
 fs::path sharedDataDir() {
   if (const char* env = std::getenv("DEEPNAV_SHARED_DATA")) return env;
-  return fs::path(DEEPNAV_SOURCE_DIR) / ".." / "shared" / "data";
+  return fs::path(deepnav::testing::sourceDir()) / ".." / "shared" / "data";
 }
 
-const fs::path kBoard = fs::path(DEEPNAV_SOURCE_DIR) / "board" / "euroc" / "board.yaml";
+const fs::path kBoard = fs::path(deepnav::testing::sourceDir()) / "board" / "euroc" / "board.yaml";
 // The images end 4.70 s after the first sample; imu0 runs on through the 145 s flight.
 constexpr double kImportSpan_s = 4.75;
 // Local gravity at the ETH Zurich Vicon room (47.4 deg N, ~450 m): 9.807 m/s2 (WGS84 normal gravity).
@@ -61,7 +63,7 @@ const Imported* importedData() {
   done = true;
   const fs::path source = sharedDataDir() / "euroc-v101-micro";
   if (!fs::exists(source / "mav0" / "cam0" / "data.csv")) return nullptr;
-  data.dir = fs::temp_directory_path() / ("deepnav_euroc_real_" + std::to_string(::getpid()));
+  data.dir = fs::path(deepnav::testing::tempPath("euroc_real"));
   fs::remove_all(data.dir);
   fs::create_directories(data.dir);
   data.recording = data.dir / "v101.mcap";

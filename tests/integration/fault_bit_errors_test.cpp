@@ -230,7 +230,7 @@ BerRun replayOverSerialLines(const std::string& recording, double ber, bool idea
   SerialLinesTap tap(ber, seed != nullptr ? std::strtoull(seed, nullptr, 10) : 0xB17E44u, ideal);
   ReplayOptions o;
   o.input_path = recording;
-  o.out_dir = ::testing::TempDir() + testing::strf("deepnav_ber_%d_%s", static_cast<int>(::getpid()), name.c_str());
+  o.out_dir = deepnav::testing::tempPath("ber_" + name);
   o.progress = false;
   o.tap = &tap;
   ReplaySummary summary;

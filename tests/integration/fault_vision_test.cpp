@@ -112,8 +112,7 @@ TEST(FaultVision, CameraFaultsAndFaultyVisionResults) {
   cameraFaults(base);
 
   // AND its recording (inputs as consumed, vision results included) replayed untouched: bit for bit
-  const std::string recording =
-      ::testing::TempDir() + testing::strf("deepnav_fault_%d_base/replay.mcap", static_cast<int>(::getpid()));
+  const std::string recording = testing::tempPath("fault_base/replay.mcap");
   const FaultRun ref = replayWithFaults(recording, "ref");
   ASSERT_TRUE(ref.summary.reproduce);
   EXPECT_EQ(ref.summary.mismatches, 0u);

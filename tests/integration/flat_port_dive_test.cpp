@@ -32,6 +32,8 @@
 #include "vision/orbvo/orb_stereo_odometry.h"
 #include "vision/pipeline/vision_pipeline.h"
 #include "vision/stereo/elas_disparity.h"
+#include "tests/support/source_paths.h"
+#include "tests/support/temp_path.h"
 
 namespace deepnav {
 namespace {
@@ -169,7 +171,7 @@ class PortEvaluator {
 class FlatPortDive : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    dir_ = std::filesystem::temp_directory_path() / ("deepnav_flat_port_dive_" + std::to_string(::getpid()));
+    dir_ = std::filesystem::path(deepnav::testing::tempPath("flat_port_dive"));
     std::filesystem::create_directories(dir_);
     const char* env = std::getenv("DEEPNAV_PORT_DIVE_S");
     duration_s_ = env ? std::atof(env) : 30.0;
@@ -187,7 +189,7 @@ class FlatPortDive : public ::testing::Test {
            "    n_glass: 1.49\n    n_water: 1.34\n";
     sim::DiveRecordOptions o;
     o.scenario_path = (dir_ / "scenario.yaml").string();
-    o.board_path = std::string(DEEPNAV_SOURCE_DIR) + "/board/sim/board.yaml";
+    o.board_path = deepnav::testing::sourceDir() + "/board/sim/board.yaml";
     o.out_path = (dir_ / "dive.mcap").string();
     o.progress = false;
     sim::DiveRecordSummary summary;

@@ -20,13 +20,14 @@
 #include "tests/support/ros1_bag_writer.h"
 #include "tests/support/temp_path.h"
 #include "tests/support/test_dive.h"
+#include "tests/support/source_paths.h"
 
 namespace deepnav {
 namespace {
 
 constexpr TimeUs kOffsetUs = 1'000'000'000;  // 1000 s: ROS stamps are never 0; a multiple of the tick period
 constexpr double kRhoG = 1025.0 * 9.80665;   // the map's depth model (its defaults)
-const std::string kBoard = std::string(DEEPNAV_SOURCE_DIR) + "/board/sim/board.yaml";
+const std::string kBoard = deepnav::testing::sourceDir() + "/board/sim/board.yaml";
 
 ros::Header headerAt(TimeUs t_us) {
   ros::Header h;
@@ -254,7 +255,7 @@ TEST_F(ForeignReplay, ItsOutputRecordingReplaysBitForBitWithAPlainReplay) {
 }
 
 TEST_F(ForeignReplay, TheCommandLineRunsItAndNamesAMissingTopic) {
-  const std::string bin = std::string(DEEPNAV_BIN_DIR) + "/deepnav";
+  const std::string bin = deepnav::testing::binDir() + "/deepnav";
   const std::string out = testing::tempPath("foreign_cli");
   const std::string log = testing::tempPath("foreign_cli.log");
   // Dead reckoning (no vision) keeps it short: the command line's wiring is what is tested here.

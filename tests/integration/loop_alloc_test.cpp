@@ -10,6 +10,7 @@
 #include "tools/sim/scenario_loader.h"
 #include "tools/sim/sensor_simulator.h"
 #include "vision/pipeline/vision_pipeline.h"
+#include "tests/support/source_paths.h"
 
 namespace deepnav {
 namespace {
@@ -26,7 +27,7 @@ struct Counting {
 std::vector<sim::SimEvent> simulate(double duration_s) {
   sim::Scenario scenario;
   std::string error;
-  EXPECT_TRUE(sim::loadScenario(std::string(DEEPNAV_SOURCE_DIR) + "/tools/sim/scenarios/default.yaml", &scenario,
+  EXPECT_TRUE(sim::loadScenario(deepnav::testing::sourceDir() + "/tools/sim/scenarios/default.yaml", &scenario,
                                 &error))
       << error;
   scenario.duration_s = duration_s;
@@ -55,7 +56,7 @@ TEST(LoopAllocations, SteadyStateLoopDoesNotAllocate) {
   const auto events = simulate(20.0);
   VehicleSetup setup;
   std::string error;
-  ASSERT_TRUE(loadVehicleSetup(std::string(DEEPNAV_SOURCE_DIR) + "/board/sim/board.yaml", &setup, &error)) << error;
+  ASSERT_TRUE(loadVehicleSetup(deepnav::testing::sourceDir() + "/board/sim/board.yaml", &setup, &error)) << error;
   LiveLoop loop;
   ASSERT_TRUE(loop.init(setup, ::testing::TempDir() + "alloc.mcap", &error)) << error;
   std::size_t next = 0;

@@ -21,6 +21,8 @@
 #include "drivers/cdr/ros_msg_codec.h"
 #include "drivers/mcap/reader.h"
 #include "drivers/mcap/writer.h"
+#include "tests/support/source_paths.h"
+#include "tests/support/temp_path.h"
 
 // GCC 12 inlines the replaced operator delete into gtest's code and then flags free() on memory
 // from operator new, not seeing that this operator new is malloc.
@@ -46,14 +48,12 @@ void operator delete[](void* p, size_t) noexcept { std::free(p); }
 namespace deepnav::mcap {
 namespace {
 
-const std::string kSourceDir = DEEPNAV_SOURCE_DIR;
+const std::string kSourceDir = deepnav::testing::sourceDir();
 const std::string kCheckScript = kSourceDir + "/tools/mcapcheck/check.mjs";
 
-// ctest runs each parameterised case as its own process, in parallel: the pid keeps their files apart.
-std::string tempPath(const std::string& name) {
-  const std::string file = "deepnav_mcapcheck_" + std::to_string(::getpid()) + "_" + name;
-  return (std::filesystem::temp_directory_path() / file).string();
-}
+// ctest runs each parameterised case as its own process, in parallel: the per-process directory keeps their
+// files apart.
+std::string tempPath(const std::string& name) { return deepnav::testing::tempPath("mcapcheck_" + name); }
 
 bool independentReaderAvailable(std::string* why) {
   if (std::system("command -v node >/dev/null 2>&1") != 0) {

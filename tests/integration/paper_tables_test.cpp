@@ -8,6 +8,7 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include "tests/support/source_paths.h"
 
 namespace deepnav {
 namespace {
@@ -40,7 +41,7 @@ struct Result {
   std::string out;
 };
 Result runTables(const std::string& args) {
-  const std::string cmd = "/usr/bin/python3 " + std::string(DEEPNAV_SOURCE_DIR) + "/tools/eval/paper_tables.py " +
+  const std::string cmd = "/usr/bin/python3 " + deepnav::testing::sourceDir() + "/tools/eval/paper_tables.py " +
                           args + " 2>&1";
   Result r;
   std::FILE* pipe = ::popen(cmd.c_str(), "r");

@@ -11,6 +11,7 @@
 #include "board/replay/bench_replay.h"
 #include "board/replay/realtime_replay.h"
 #include "tests/support/test_dive.h"
+#include "tests/support/source_paths.h"
 
 namespace deepnav {
 namespace {
@@ -218,7 +219,7 @@ TEST(NavCoreHealth, ASensorThatStopsIsFlaggedStaleAtTheTickEvenWithoutOtherInput
   const std::string dive = testing::makeTestDive("stale_dive", 10.0, 7, /*render=*/false);
   VehicleSetup setup;
   std::string error;
-  ASSERT_TRUE(loadVehicleSetup(std::string(DEEPNAV_SOURCE_DIR) + "/board/sim/board.yaml", &setup, &error)) << error;
+  ASSERT_TRUE(loadVehicleSetup(deepnav::testing::sourceDir() + "/board/sim/board.yaml", &setup, &error)) << error;
   NavCore core;
   ASSERT_TRUE(core.init(setup, nullptr, &error)) << error;
   RecordingReader reader;

@@ -19,6 +19,7 @@
 #include "tools/sim/rotation.h"
 #include "tools/sim/scenario_loader.h"
 #include "tools/sim/sensor_simulator.h"
+#include "tests/support/source_paths.h"
 
 namespace deepnav {
 namespace {
@@ -104,7 +105,7 @@ ReplaySummary deepnavDeadReckoning(const std::string& scenario_path, const std::
   return s;
 }
 
-const std::string kScenarios = std::string(DEEPNAV_SOURCE_DIR) + "/tools/sim/scenarios/";
+const std::string kScenarios = deepnav::testing::sourceDir() + "/tools/sim/scenarios/";
 
 TEST(SeaTrialDeadReckoning, DriftsAsItsSensorGradesImply) {
   // GIVEN the moderate sea trial's sensors (the water does not matter without images)
@@ -115,7 +116,7 @@ TEST(SeaTrialDeadReckoning, DriftsAsItsSensorGradesImply) {
   // WHEN deepnav dead-reckons the same dive as a plain integrator (with its systematic states as consider
   // states it drifts more on this seed: 9.3 % against 3.5 %, docs/results.md "Main job")
   const ReplaySummary s = deepnavDeadReckoning(kScenarios + "sea-trial.yaml",
-                                               std::string(DEEPNAV_SOURCE_DIR) + "/board/sim-sea/board.yaml", "sea",
+                                               deepnav::testing::sourceDir() + "/board/sim-sea/board.yaml", "sea",
                                                kWithoutSystematicStates);
   ASSERT_TRUE(s.has_truth);
   const double deepnav_percent = s.metrics.rpe.translation_percent.mean;
@@ -136,7 +137,7 @@ TEST(SeaTrialDeadReckoning, TheFilterIsConsistentWithItsSystematicStates) {
   // consider states, nothing aids the position) the DVL scale, misalignment and velocity bias and the
   // compass bias and deviation
   const ReplaySummary s = deepnavDeadReckoning(kScenarios + "sea-trial.yaml",
-                                               std::string(DEEPNAV_SOURCE_DIR) + "/board/sim-sea/board.yaml", "nees");
+                                               deepnav::testing::sourceDir() + "/board/sim-sea/board.yaml", "nees");
   ASSERT_TRUE(s.has_truth);
   const NeesSummary& pos = s.metrics.nees_position_summary;
   const NeesSummary& yaw = s.metrics.nees_heading_summary;
@@ -159,7 +160,7 @@ TEST(SeaTrialDeadReckoning, TheDefaultDivesKindSensorsDriftFarLess) {
   // The contrast the bench was built for: deepnav's dead reckoning on the default dive's sensors (white
   // noise, a compass offset the board knows exactly) drifts several times less per metre than on the sea
   // trial's.
-  const std::string board = std::string(DEEPNAV_SOURCE_DIR) + "/board/";
+  const std::string board = deepnav::testing::sourceDir() + "/board/";
   const ReplaySummary kind = deepnavDeadReckoning(kScenarios + "default.yaml", board + "sim/board.yaml", "default");
   const ReplaySummary sea =
       deepnavDeadReckoning(kScenarios + "sea-trial.yaml", board + "sim-sea/board.yaml", "sea2", kWithoutSystematicStates);

@@ -15,6 +15,7 @@
 #include "board/service/output_publisher.h"
 
 #include "tests/support/alloc_counter.h"
+#include "tests/support/source_paths.h"
 
 namespace deepnav {
 namespace {
@@ -23,7 +24,7 @@ TEST(ServiceAlloc, TickObserverAllocatesNothing) {
   // GIVEN the sim board's loop (not started: this thread plays the loop thread) and live outputs
   VehicleSetup setup;
   std::string error;
-  ASSERT_TRUE(loadVehicleSetup(std::string(DEEPNAV_SOURCE_DIR) + "/board/sim/board.yaml", &setup, &error)) << error;
+  ASSERT_TRUE(loadVehicleSetup(deepnav::testing::sourceDir() + "/board/sim/board.yaml", &setup, &error)) << error;
   LiveLoop loop;
   ASSERT_TRUE(loop.init(setup, "", &error)) << error;
   const int udp = ::socket(AF_INET, SOCK_DGRAM, 0);

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "tests/support/service_fixture.h"
+#include "tests/support/source_paths.h"
 
 namespace deepnav {
 namespace {
@@ -23,7 +24,7 @@ std::string readFile(const std::string& path) {
 
 TEST(ServiceUnitFile, SystemdAnalyzeVerifyIsClean) {
   if (::access("/usr/bin/systemd-analyze", X_OK) != 0) GTEST_SKIP() << "systemd-analyze not installed";
-  std::string unit = readFile(std::string(DEEPNAV_SOURCE_DIR) + "/board/systemd/deepnav.service");
+  std::string unit = readFile(deepnav::testing::sourceDir() + "/board/systemd/deepnav.service");
   // The unit is the notify type with a watchdog, restarts on failure, and runs the service command.
   EXPECT_NE(unit.find("\nType=notify\n"), std::string::npos);
   EXPECT_NE(unit.find("\nWatchdogSec="), std::string::npos);
@@ -31,7 +32,7 @@ TEST(ServiceUnitFile, SystemdAnalyzeVerifyIsClean) {
   const std::string exec = "ExecStart=/usr/bin/deepnav run --board /etc/deepnav/board.yaml";
   const auto at = unit.find(exec);
   ASSERT_NE(at, std::string::npos);
-  unit.replace(at, std::string("ExecStart=/usr/bin/deepnav").size(), "ExecStart=" + std::string(DEEPNAV_BIN_DIR) + "/deepnav");
+  unit.replace(at, std::string("ExecStart=/usr/bin/deepnav").size(), "ExecStart=" + deepnav::testing::binDir() + "/deepnav");
   const std::string dir = testing::tempPath("unit");
   ASSERT_EQ(std::system(("mkdir -p " + dir).c_str()), 0);
   std::ofstream(dir + "/deepnav.service") << unit;

@@ -17,6 +17,7 @@
 #include "tests/support/sensor_frames.h"
 #include "tests/support/service_fixture.h"
 #include "tests/support/test_dive.h"
+#include "tests/support/source_paths.h"
 
 namespace deepnav {
 namespace {
@@ -35,7 +36,7 @@ Outcome runDeepnav(const std::vector<std::string>& args) {
 bool has(const std::string& text, const std::string& what) { return text.find(what) != std::string::npos; }
 
 TEST(ServiceValidation, ExampleVehicleFailsNamingItsFirstMissingDevice) {
-  const std::string board = std::string(DEEPNAV_SOURCE_DIR) + "/board/example-vehicle/board.yaml";
+  const std::string board = deepnav::testing::sourceDir() + "/board/example-vehicle/board.yaml";
   for (const bool validate_only : {true, false}) {
     std::vector<std::string> args = {"run", "--board", board};
     if (validate_only) args.push_back("--validate");

@@ -11,6 +11,7 @@
 #include "board/config/vehicle_setup.h"
 #include "drivers/replay/recording_reader.h"
 #include "tests/support/test_dive.h"
+#include "tests/support/source_paths.h"
 
 namespace deepnav {
 namespace {
@@ -24,7 +25,7 @@ Dive makeDive(const std::string& name, double duration_s, std::uint64_t seed = 7
   Dive d;
   d.path = testing::makeTestDive(name, duration_s, seed);
   std::string error;
-  EXPECT_TRUE(loadVehicleSetup(std::string(DEEPNAV_SOURCE_DIR) + "/board/sim/board.yaml", &d.setup, &error)) << error;
+  EXPECT_TRUE(loadVehicleSetup(deepnav::testing::sourceDir() + "/board/sim/board.yaml", &d.setup, &error)) << error;
   return d;
 }
 

@@ -10,6 +10,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "tests/support/test_dive.h"
+#include "tests/support/source_paths.h"
 
 namespace deepnav {
 namespace {
@@ -25,10 +26,10 @@ constexpr std::uint64_t kMinVisionRuns = 20;
 TEST(Soak, OneMinuteOfDivesBackToBackKeepsResidentMemoryFlat) {
   // GIVEN a rendered 15 s dive
   const std::string dive = testing::makeTestDive("soak", 15.0, 5, true);
-  const std::string dir = ::testing::TempDir() + "deepnav_soak_" + std::to_string(::getpid());
+  const std::string dir = testing::tempPath("soak");
   const std::string json = dir + ".json";
   // WHEN deepnav-soak replays it back to back for a minute
-  const std::string cmd = std::string(DEEPNAV_BIN_DIR) + "/deepnav-soak " + dive +
+  const std::string cmd = deepnav::testing::binDir() + "/deepnav-soak " + dive +
                           " --minutes 1 --speed 4 --warmup-dives 3 --quiet --scratch " + dir + " --json " + json;
   const int status = std::system(cmd.c_str());
   // THEN it passes its own memory check, and the figures say why

@@ -27,7 +27,7 @@ ReplaySummary replay(const std::string& out, const std::vector<std::string>& ext
                      const std::string& ws_out) {
   ReplayOptions o;
   o.input_path = quickDive();
-  o.out_dir = ::testing::TempDir() + "deepnav_stage2_" + std::to_string(::getpid()) + "_" + out;
+  o.out_dir = testing::tempPath("stage2_" + out);
   o.progress = false;
   o.overrides = kQuickStages;
   o.overrides.insert(o.overrides.end(), extra.begin(), extra.end());
@@ -40,7 +40,7 @@ ReplaySummary replay(const std::string& out, const std::vector<std::string>& ext
 }
 
 TEST(Stage2Replay, AdaptiveVoIsFusedAndTheWorkspaceRestartsInStage2) {
-  const std::string ws = ::testing::TempDir() + "deepnav_stage2_ws_" + std::to_string(::getpid());
+  const std::string ws = testing::tempPath("stage2_ws");
   // GIVEN a dive replayed through both stages (EKF-adaptive), saving its workspace
   const ReplaySummary first = replay("first", {}, "", ws);
   // THEN the panel is fixed, the map built, stage 2 entered after both, and VO results fused
@@ -88,7 +88,7 @@ TEST(Stage2Replay, AdaptiveVoIsFusedAndTheWorkspaceRestartsInStage2) {
 TEST(Stage2Replay, BadOverrideNamesTheKey) {
   ReplayOptions o;
   o.input_path = testing::makeTestDive("stage2_bad", 2.0, 3, false);
-  o.out_dir = ::testing::TempDir() + "deepnav_stage2_bad_" + std::to_string(::getpid());
+  o.out_dir = testing::tempPath("stage2_bad");
   o.progress = false;
   o.overrides = {"vision.vo_mode=fastest"};
   ReplaySummary s;

@@ -17,13 +17,14 @@
 
 #include "drivers/files/pfm_file.h"
 #include "vision/stereo/stereo_accuracy.h"
+#include "tests/support/source_paths.h"
 
 namespace deepnav {
 namespace {
 
 std::filesystem::path sharedData() {
   const char* env = std::getenv("DEEPNAV_SHARED_DATA");
-  return env ? std::filesystem::path(env) : std::filesystem::path(DEEPNAV_SOURCE_DIR) / "../shared/data";
+  return env ? std::filesystem::path(env) : std::filesystem::path(deepnav::testing::sourceDir()) / "../shared/data";
 }
 
 class StereoCli : public ::testing::TestWithParam<const char*> {};
@@ -36,7 +37,7 @@ TEST_P(StereoCli, ElasPfmMeetsTheD1Target) {
   std::ifstream(dir / "info.txt") >> scale >> range;
   ASSERT_GT(scale, 0.0);
   const std::string out = ::testing::TempDir() + std::string(GetParam()) + ".pfm";
-  const std::string cmd = std::string(DEEPNAV_BIN_DIR) + "/deepnav stereo " + (dir / "imL.png").string() + " " +
+  const std::string cmd = deepnav::testing::binDir() + "/deepnav stereo " + (dir / "imL.png").string() + " " +
                           (dir / "imR.png").string() + " --method elas --max-disp " + std::to_string(range) +
                           " --out " + out + " > /dev/null";
   ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
@@ -59,7 +60,7 @@ INSTANTIATE_TEST_SUITE_P(Middlebury, StereoCli, ::testing::Values("middlebury-ts
 // `deepnav stereo ARGS` with stderr captured: {exit code (-1: killed by a signal), stderr}.
 std::pair<int, std::string> runStereo(const std::string& args) {
   const std::string err = ::testing::TempDir() + "stereo_cli_stderr.txt";
-  const std::string cmd = std::string(DEEPNAV_BIN_DIR) + "/deepnav stereo " + args + " > /dev/null 2> " + err;
+  const std::string cmd = deepnav::testing::binDir() + "/deepnav stereo " + args + " > /dev/null 2> " + err;
   const int status = std::system(cmd.c_str());
   std::ifstream in(err);
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -111,7 +112,7 @@ TEST(StereoCliArguments, APairLargerThanMaxPixelsIsRefusedBeforeMatching) {
 // `deepnav stereo ARGS` with stdout captured: {exit code, stdout}.
 std::pair<int, std::string> runStereoOut(const std::string& args) {
   const std::string out = ::testing::TempDir() + "stereo_cli_stdout.txt";
-  const std::string cmd = std::string(DEEPNAV_BIN_DIR) + "/deepnav stereo " + args + " > " + out + " 2>&1";
+  const std::string cmd = deepnav::testing::binDir() + "/deepnav stereo " + args + " > " + out + " 2>&1";
   const int status = std::system(cmd.c_str());
   std::ifstream in(out);
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

@@ -20,6 +20,7 @@
 #include "tools/sim/scenario_loader.h"
 #include "vision/iqa/mdm.h"
 #include "vision/pipeline/vision_pipeline.h"
+#include "tests/support/source_paths.h"
 
 namespace deepnav {
 namespace {
@@ -45,13 +46,13 @@ class VisionRectify : public ::testing::Test {
  protected:
   void SetUp() override {
     std::string error;
-    ASSERT_TRUE(sim::loadScenario(std::string(DEEPNAV_SOURCE_DIR) + "/tools/sim/scenarios/flat-port.yaml", &scenario_,
+    ASSERT_TRUE(sim::loadScenario(deepnav::testing::sourceDir() + "/tools/sim/scenarios/flat-port.yaml", &scenario_,
                                   &error))
         << error;
     ASSERT_TRUE(scenario_.camera.flat_port);
     // The board the simulator stores with a flat-port dive, and the same with the port ignored.
     for (VehicleSetup* setup : {&pinax_, &plain_}) {
-      ASSERT_TRUE(loadVehicleSetup(std::string(DEEPNAV_SOURCE_DIR) + "/board/sim/board.yaml", setup, &error)) << error;
+      ASSERT_TRUE(loadVehicleSetup(deepnav::testing::sourceDir() + "/board/sim/board.yaml", setup, &error)) << error;
       bool described = false;
       ASSERT_TRUE(sim::describeSimulatedPort(scenario_, setup, &described, &error)) << error;
       ASSERT_TRUE(described);

@@ -43,7 +43,7 @@ inline FaultRun replayWithFaults(const std::string& recording, const std::string
   run.tap = std::make_unique<ReplayFaultInjector>(spec);
   ReplayOptions o;
   o.input_path = recording;
-  o.out_dir = ::testing::TempDir() + strf("deepnav_fault_%d_%s", static_cast<int>(::getpid()), name.c_str());
+  o.out_dir = tempPath("fault_" + name);
   o.progress = false;
   o.overrides = overrides;
   o.tap = run.tap.get();

@@ -24,6 +24,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "tests/support/temp_path.h"
+#include "tests/support/source_paths.h"
 
 extern char** environ;
 
@@ -33,7 +34,7 @@ namespace deepnav::testing {
 // set, and every `settings` entry ("group.key" -> YAML scalar) applied. Returns the new file's path.
 inline std::string makeServiceBoard(const std::string& name, const std::string& dive,
                                     const std::map<std::string, std::string>& settings = {}) {
-  const std::string sim = std::string(DEEPNAV_SOURCE_DIR) + "/board/sim/";
+  const std::string sim = deepnav::testing::sourceDir() + "/board/sim/";
   YAML::Node board = YAML::LoadFile(sim + "board.yaml");
   board["markers"]["panel_file"] = sim + "panel.yaml";
   board["sources"]["replay_path"] = dive;
@@ -73,7 +74,7 @@ class DeepnavProcess {
  public:
   DeepnavProcess(const std::vector<std::string>& args, const std::map<std::string, std::string>& env = {}) {
     stderr_path_ = tempPath("stderr_" + std::to_string(counter()++) + ".txt");
-    std::vector<std::string> argv_s = {std::string(DEEPNAV_BIN_DIR) + "/deepnav"};
+    std::vector<std::string> argv_s = {deepnav::testing::binDir() + "/deepnav"};
     argv_s.insert(argv_s.end(), args.begin(), args.end());
     std::vector<std::string> env_s;
     for (char** e = environ; *e; ++e) {

@@ -10,6 +10,7 @@
 
 #include "tests/support/temp_path.h"
 #include "tools/sim/dive_recorder.h"
+#include "tests/support/source_paths.h"
 
 namespace deepnav::testing {
 
@@ -18,7 +19,7 @@ namespace deepnav::testing {
 inline std::string makeTestDive(const std::string& name, double duration_s, std::uint64_t seed = 7,
                                 bool render = true,
                                 const std::vector<std::pair<std::string, std::string>>& edits = {}) {
-  std::ifstream in(std::string(DEEPNAV_SOURCE_DIR) + "/tools/sim/scenarios/default.yaml");
+  std::ifstream in(deepnav::testing::sourceDir() + "/tools/sim/scenarios/default.yaml");
   std::stringstream text;
   text << in.rdbuf();
   std::string yaml = text.str();
@@ -35,7 +36,7 @@ inline std::string makeTestDive(const std::string& name, double duration_s, std:
   sim::DiveRecordOptions o;
   o.scenario_path = scenario;
   o.out_path = tempPath(name) + ".mcap";
-  o.board_path = std::string(DEEPNAV_SOURCE_DIR) + "/board/sim/board.yaml";
+  o.board_path = deepnav::testing::sourceDir() + "/board/sim/board.yaml";
   o.seed = seed;
   o.progress = false;
   o.render = render;

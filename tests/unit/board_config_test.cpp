@@ -113,6 +113,7 @@ TEST(BoardConfig, MountingRotationsLeverArmsAndDurations) {
 #include "board/config/board_overrides.h"
 #include "board/config/vehicle_setup.h"
 #include "board/loop/nav_core.h"
+#include "tests/support/source_paths.h"
 
 namespace deepnav {
 namespace {
@@ -122,7 +123,7 @@ TEST(BoardConfig, MarkersEnabledKeySwitchesTheWholeMarkerChain) {
   // the vision worker and used by the loop
   VehicleSetup setup;
   std::string error;
-  const std::string board = std::string(DEEPNAV_SOURCE_DIR) + "/board/sim/board.yaml";
+  const std::string board = deepnav::testing::sourceDir() + "/board/sim/board.yaml";
   ASSERT_TRUE(loadVehicleSetup(board, &setup, &error)) << error;
   EXPECT_TRUE(setup.config.markers.enabled);
   EXPECT_TRUE(visionConfig(setup).detect_markers);

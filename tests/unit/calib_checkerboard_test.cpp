@@ -25,6 +25,7 @@
 #include "vision/calib/checkerboard_view.h"
 #include "vision/calib/stereo_checkerboard_calibration.h"
 #include "vision/calib/stereo_rectification.h"
+#include "tests/support/temp_path.h"
 
 namespace deepnav {
 namespace {
@@ -37,7 +38,7 @@ constexpr double kAssumedSquareM = 0.025;
 bool has(const std::string& text, const std::string& what) { return text.find(what) != std::string::npos; }
 
 std::string writeTemp(const std::string& name, const std::string& text) {
-  const std::string path = ::testing::TempDir() + "checkerboard_" + std::to_string(getpid()) + "_" + name;
+  const std::string path = deepnav::testing::tempPath("checkerboard_" + name);
   std::ofstream(path) << text;
   return path;
 }
@@ -312,7 +313,7 @@ void CheckerboardOpencvDoc::EachImportFormatGivesBackTheCalibration() {
   ASSERT_TRUE(ok_) << error_;
   const StereoCalibration& c = result_->calibration;
   ASSERT_EQ(c.left.dist.at<double>(4), 0.0);  // k3 fixed: Kalibr's radtan holds k1 k2 p1 p2
-  const std::string dir = ::testing::TempDir() + "checkerboard_roundtrip_" + std::to_string(getpid()) + "_";
+  const std::string dir = deepnav::testing::tempPath("checkerboard_roundtrip_");
   std::vector<std::pair<std::string, ImportedCalibration>> imported(3);
   std::string error;
   test::writeKalibrCamchain(c, dir + "camchain.yaml");

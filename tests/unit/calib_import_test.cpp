@@ -18,6 +18,7 @@
 #include "board/config/calibration_import_opencv.h"
 #include "board/config/stereo_calibration_file.h"
 #include "tests/unit/calib_import_writers.h"
+#include "tests/support/temp_path.h"
 
 namespace deepnav {
 namespace {
@@ -25,7 +26,7 @@ namespace {
 bool has(const std::string& text, const std::string& what) { return text.find(what) != std::string::npos; }
 
 std::string writeTemp(const std::string& name, const std::string& text) {
-  const std::string path = ::testing::TempDir() + "calib_import_" + std::to_string(getpid()) + "_" + name;
+  const std::string path = deepnav::testing::tempPath("calib_import_" + name);
   std::ofstream(path) << text;
   return path;
 }
@@ -398,7 +399,7 @@ TEST(CalibImportRoundTrip, EachFormatGivesBackARationalAndAPlumbBobRig) {
   rig.right.dist = (cv::Mat_<double>(1, 8) << 0.38, -0.10, -0.0003, 0.0005, 0.01, 0.74, -0.04, 0.06);
   cv::Rodrigues(cv::Vec3d(0.004, -0.02, 0.001), rig.R);
   rig.T = cv::Vec3d(-0.30, 0.002, -0.004);
-  const std::string dir = ::testing::TempDir() + "calib_import_" + std::to_string(getpid()) + "_rt_";
+  const std::string dir = deepnav::testing::tempPath("calib_import_rt_");
   for (const bool rational : {true, false}) {
     StereoCalibration c = rig;
     if (!rational) {
@@ -438,7 +439,7 @@ TEST(CalibImportCommand, WritesTheCalibrationFileItPrints) {
   ImportCalibrationOptions o;
   o.format = "kalibr";
   o.inputs = {writeTemp("cmd_camchain.yaml", kEurocCamchain)};
-  o.out_path = ::testing::TempDir() + "calib_import_" + std::to_string(getpid()) + "_out.yaml";
+  o.out_path = deepnav::testing::tempPath("calib_import_out.yaml");
   ::testing::internal::CaptureStdout();
   const int rc = runImportCalibrationCommand(o);
   std::fflush(stdout);

@@ -1,6 +1,7 @@
 // docs/configuration.md holds the board parameter table exactly as `deepnav config --list` prints it
 // (describeBoardParams), between two markers; the page says how to regenerate it.
 #include "board/config/board_config.h"
+#include "tests/support/source_paths.h"
 
 #include <fstream>
 #include <sstream>
@@ -23,7 +24,7 @@ std::string readFile(const std::string& path) {
 }  // namespace
 
 TEST(DocsConfiguration, ParameterTableIsWhatConfigListPrints) {
-  const std::string path = std::string(DEEPNAV_SOURCE_DIR) + "/docs/configuration.md";
+  const std::string path = deepnav::testing::sourceDir() + "/docs/configuration.md";
   const std::string page = readFile(path);
   const auto begin = page.find(kBegin);
   const auto end = page.find(kEnd);

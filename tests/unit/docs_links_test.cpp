@@ -14,6 +14,8 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include "tests/support/source_paths.h"
+#include "tests/support/temp_path.h"
 
 namespace {
 
@@ -137,7 +139,7 @@ std::vector<fs::path> documentationPages(const fs::path& root) {
 }
 
 fs::path scratchDir() {
-  const fs::path dir = fs::temp_directory_path() / ("deepnav_docs_links_" + std::to_string(::getpid()));
+  const fs::path dir = fs::path(deepnav::testing::tempPath("docs_links"));
   fs::create_directories(dir / "docs");
   return dir;
 }
@@ -147,7 +149,7 @@ void writeFile(const fs::path& path, const std::string& text) { std::ofstream(pa
 }  // namespace
 
 TEST(DocsLinks, EveryRelativeLinkOfTheReadmeAndDocsResolves) {
-  const fs::path root = DEEPNAV_SOURCE_DIR;
+  const fs::path root = deepnav::testing::sourceDir();
   const auto pages = documentationPages(root);
   ASSERT_GE(pages.size(), 2u) << "README.md and docs/*.md expected under " << root;
   std::vector<std::string> broken;
@@ -162,7 +164,7 @@ TEST(DocsLinks, EveryRelativeLinkOfTheReadmeAndDocsResolves) {
 
 TEST(DocsLinks, TheReadmeStaysShort) {
   // Issue 22: a README a newcomer reads in five minutes, at most about 15 KB; the rest lives in docs/.
-  const auto size = fs::file_size(fs::path(DEEPNAV_SOURCE_DIR) / "README.md");
+  const auto size = fs::file_size(fs::path(deepnav::testing::sourceDir()) / "README.md");
   EXPECT_LE(size, 15u * 1024u) << "README.md is " << size << " bytes: move the detail into docs/";
 }
 

@@ -26,6 +26,8 @@
 #include "nav/ekf/ekf.h"
 #include "nav/ekf/initial_alignment.h"
 #include "nav/stage/stage_machine.h"
+#include "tests/support/source_paths.h"
+#include "tests/support/temp_path.h"
 
 namespace deepnav {
 namespace {
@@ -34,7 +36,7 @@ namespace fs = std::filesystem;
 
 fs::path sharedDataDir() {
   if (const char* env = std::getenv("DEEPNAV_SHARED_DATA")) return env;
-  return fs::path(DEEPNAV_SOURCE_DIR) / ".." / "shared" / "data";
+  return fs::path(deepnav::testing::sourceDir()) / ".." / "shared" / "data";
 }
 
 // Scratch folders under the system's temp directory, removed when the binary ends.
@@ -48,7 +50,7 @@ struct ScratchDirs {
 
 fs::path scratchDir(const std::string& name) {
   static ScratchDirs scratch;
-  const fs::path dir = fs::temp_directory_path() / ("deepnav_euroc_" + name + "_" + std::to_string(::getpid()));
+  const fs::path dir = fs::path(deepnav::testing::tempPath("euroc_" + name));
   fs::remove_all(dir);
   fs::create_directories(dir);
   scratch.dirs.push_back(dir);
@@ -377,9 +379,9 @@ TEST(EurocImport, ABoardGoesIntoTheRecordingAndMustMatchTheImages) {
   // A board for other images is refused, naming its keys (with calibration_file the board's own loader
   // refuses it first: the calibration is for 64 x 48).
   writeText(root / "board.yaml", "camera:\n  width_px: 752\n  height_px: 480\n");
-  testing::internal::CaptureStderr();
+  ::testing::internal::CaptureStderr();
   EXPECT_EQ(runImportEurocCommand(o), 1);
-  const std::string err = testing::internal::GetCapturedStderr();
+  const std::string err = ::testing::internal::GetCapturedStderr();
   EXPECT_NE(err.find("camera.width_px/height_px/channels are 752x480x1"), std::string::npos) << err;
 }
 
@@ -390,9 +392,9 @@ TEST(EurocImport, BadInputFailsWithExitCodeOneAndNoRecording) {
   o.dir = root.string();
   o.out_path = (root / "rec.mcap").string();
   o.quiet = true;
-  testing::internal::CaptureStderr();
+  ::testing::internal::CaptureStderr();
   EXPECT_EQ(runImportEurocCommand(o), 1);
-  const std::string err = testing::internal::GetCapturedStderr();
+  const std::string err = ::testing::internal::GetCapturedStderr();
   EXPECT_NE(err.find("cam1/sensor.yaml"), std::string::npos) << err;
   EXPECT_FALSE(fs::exists(o.out_path));
 }

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "board/config/topic_map_file.h"
+#include "tests/support/source_paths.h"
 
 namespace deepnav {
 namespace {
@@ -29,7 +30,7 @@ std::string parseError(const std::string& text) {
 TEST(ForeignTopicMap, TheWorkedExampleParsesAsItsCommentsSay) {
   TopicMapFile f;
   std::string error;
-  ASSERT_TRUE(loadTopicMapFile(std::string(DEEPNAV_SOURCE_DIR) + "/board/examples/topic_map.yaml", &f, &error))
+  ASSERT_TRUE(loadTopicMapFile(deepnav::testing::sourceDir() + "/board/examples/topic_map.yaml", &f, &error))
       << error;
   ASSERT_EQ(f.map.topics.size(), 5u);
   const foreign::TopicMapping* ahrs = f.map.find("/ahrs/imu");
@@ -79,7 +80,7 @@ TEST(ForeignTopicMap, AnAttitudeOnlyTopicConvertsWithItsOwnMounting) {
 }
 
 TEST(ForeignTopicMap, EveryKeyIsDocumented) {
-  const std::string doc = readFile(std::string(DEEPNAV_SOURCE_DIR) + "/docs/foreign-recordings.md");
+  const std::string doc = readFile(deepnav::testing::sourceDir() + "/docs/foreign-recordings.md");
   ASSERT_FALSE(doc.empty());
   EXPECT_NE(doc.find(describeTopicMapParams()), std::string::npos)
       << "docs/foreign-recordings.md must hold the table of describeTopicMapParams():\n"

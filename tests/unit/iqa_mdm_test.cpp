@@ -9,13 +9,14 @@
 
 #include "vision/iqa/image_quality_score.h"
 #include "vision/iqa/mdm.h"
+#include "tests/support/source_paths.h"
 
 namespace deepnav {
 namespace {
 
 std::filesystem::path sharedDataDir() {
   if (const char* env = std::getenv("DEEPNAV_SHARED_DATA")) return env;
-  return std::filesystem::path(DEEPNAV_SOURCE_DIR) / ".." / "shared" / "data";
+  return std::filesystem::path(deepnav::testing::sourceDir()) / ".." / "shared" / "data";
 }
 
 TEST(Mdm, MatchesAuthorsReferenceCode) {

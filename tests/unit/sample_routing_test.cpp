@@ -15,6 +15,7 @@
 #include "drivers/recording/sample_codec.h"
 #include "drivers/recording/topics.h"
 #include "nav/types/input_sample.h"
+#include "tests/support/source_paths.h"
 
 namespace deepnav {
 namespace {
@@ -121,7 +122,7 @@ class CountingSink final : public RecordSink {
 TEST(SampleRouting, NavCoreCountsEachKindUnderItsOwnName) {
   VehicleSetup setup;
   std::string error;
-  ASSERT_TRUE(loadVehicleSetup(std::string(DEEPNAV_SOURCE_DIR) + "/board/sim/board.yaml", &setup, &error)) << error;
+  ASSERT_TRUE(loadVehicleSetup(deepnav::testing::sourceDir() + "/board/sim/board.yaml", &setup, &error)) << error;
   CountingSink sink;
   NavCore core;
   ASSERT_TRUE(core.init(setup, &sink, &error)) << error;

@@ -10,6 +10,7 @@
 #include "tools/sim/scenario_loader.h"
 #include "tools/sim/sensor_simulator.h"
 #include "tests/support/x86_64_reference.h"
+#include "tests/support/source_paths.h"
 
 namespace deepnav::sim {
 namespace {
@@ -65,7 +66,7 @@ TEST(SimDvlDefaultStream, DefaultFileAndGradeNoneGiveTheRecordedStream) {
   DEEPNAV_SKIP_UNLESS_X86_64_REFERENCE();
   Scenario from_file, grade_none;
   std::string error;
-  ASSERT_TRUE(loadScenario(std::string(DEEPNAV_SOURCE_DIR) + "/tools/sim/scenarios/default.yaml", &from_file, &error))
+  ASSERT_TRUE(loadScenario(deepnav::testing::sourceDir() + "/tools/sim/scenarios/default.yaml", &from_file, &error))
       << error;
   ASSERT_TRUE(parseScenario("dvl: {grade: none}", "none.yaml", &grade_none, &error)) << error;
   EXPECT_EQ(dvlStreamHash(from_file, 1).first, kDefaultDvlHash);

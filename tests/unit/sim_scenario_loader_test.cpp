@@ -1,4 +1,5 @@
 #include "tools/sim/scenario_loader.h"
+#include "tests/support/source_paths.h"
 
 #include <string>
 
@@ -7,7 +8,7 @@
 namespace deepnav::sim {
 namespace {
 
-const std::string kScenarioDir = std::string(DEEPNAV_SOURCE_DIR) + "/tools/sim/scenarios/";
+const std::string kScenarioDir = deepnav::testing::sourceDir() + "/tools/sim/scenarios/";
 
 std::string parseError(const std::string& yaml) {
   Scenario s;

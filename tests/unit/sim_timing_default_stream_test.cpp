@@ -13,6 +13,7 @@
 #include "sim_test_events.h"
 #include "tools/sim/scenario_loader.h"
 #include "tests/support/x86_64_reference.h"
+#include "tests/support/source_paths.h"
 
 namespace deepnav::sim {
 namespace {
@@ -68,7 +69,7 @@ TEST(SimTimingDefaultStream, DefaultScenarioStreamsAreBitIdenticalToBeforeTheSea
   for (const Recorded& r : kRecorded) {
     Scenario s;
     std::string error;
-    ASSERT_TRUE(loadScenario(std::string(DEEPNAV_SOURCE_DIR) + "/tools/sim/scenarios/" + r.scenario + ".yaml", &s,
+    ASSERT_TRUE(loadScenario(deepnav::testing::sourceDir() + "/tools/sim/scenarios/" + r.scenario + ".yaml", &s,
                              &error))
         << error;
     const StreamHashes h = hashStreams(s, r.seed);

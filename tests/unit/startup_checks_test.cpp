@@ -1,5 +1,6 @@
 // The start-up probes `deepnav run --validate` shares with run (board/service/startup_checks.h).
 #include "board/service/startup_checks.h"
+#include "tests/support/temp_path.h"
 
 #include <netinet/in.h>
 #include <sys/socket.h>
@@ -17,7 +18,7 @@ namespace {
 bool has(const std::string& text, const std::string& what) { return text.find(what) != std::string::npos; }
 
 TEST(StartupChecks, DirectoriesRunWouldCreateOrWrite) {
-  const std::string base = ::testing::TempDir() + "startup_checks_" + std::to_string(::getpid());
+  const std::string base = deepnav::testing::tempPath("startup_checks");
   std::filesystem::create_directories(base);
   const std::string file = base + "/file";
   std::ofstream(file) << "x";

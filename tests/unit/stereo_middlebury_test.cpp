@@ -12,13 +12,14 @@
 #include "vision/stereo/elas_disparity.h"
 #include "vision/stereo/sgbm_disparity.h"
 #include "vision/stereo/stereo_accuracy.h"
+#include "tests/support/source_paths.h"
 
 namespace deepnav {
 namespace {
 
 std::filesystem::path sharedDataDir() {
   if (const char* env = std::getenv("DEEPNAV_SHARED_DATA")) return env;
-  return std::filesystem::path(DEEPNAV_SOURCE_DIR) / ".." / "shared" / "data";
+  return std::filesystem::path(deepnav::testing::sourceDir()) / ".." / "shared" / "data";
 }
 
 struct MiddleburyPair {

@@ -17,13 +17,14 @@
 #include "board/config/text_file.h"
 #include "board/config/yaml_document.h"
 #include "tools/sim/scenario_loader.h"
+#include "tests/support/source_paths.h"
 
 namespace deepnav {
 namespace {
 
 namespace fs = std::filesystem;
 
-const std::string kSource = DEEPNAV_SOURCE_DIR;
+const std::string kSource = deepnav::testing::sourceDir();
 
 std::string writeTemp(const std::string& name, const std::string& text) {
   const std::string path = ::testing::TempDir() + "yaml_input_" + name;
