@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 
+#include "base/overloaded.h"
 #include "board/config/panel_file.h"
 #include "board/config/recording_options.h"
 #include "board/config/vehicle_setup.h"
@@ -83,24 +84,17 @@ struct FrameRecorder {
   }
 };
 
-// Sensor samples become loop inputs; camera ticks become rendered stereo pairs.
+// Sensor samples become loop inputs; camera ticks become rendered stereo pairs. Dispatched by the sample's
+// type, so the stream enum and the variant's order cannot disagree here.
 void recordEvent(const SimEvent& e, const SensorSimulator& sim, const Eigen::Vector3d& scene_to_odom_m,
                  FrameRecorder* frames, RecordingWriter* writer, DiveRecordSummary* summary) {
-  switch (e.stream) {
-    case SimStream::kGroundTruth:
-      writer->recordTruth(toTruth(std::get<GroundTruthSample>(e.sample), scene_to_odom_m));
-      break;
-    case SimStream::kImu: writer->recordInputArrived(std::get<ImuSample>(e.sample), e.t_us); break;
-    case SimStream::kDvl: writer->recordInputArrived(std::get<DvlSample>(e.sample), e.t_us); break;
-    case SimStream::kCompass: writer->recordInputArrived(std::get<HeadingSample>(e.sample), e.t_us); break;
-    case SimStream::kAttitude: writer->recordInputArrived(std::get<AttitudeSample>(e.sample), e.t_us); break;
-    case SimStream::kDepth: writer->recordInputArrived(std::get<DepthSample>(e.sample), e.t_us); break;
-    case SimStream::kCamera:
-      ++summary->camera_ticks;
-      frames->record(std::get<CameraTick>(e.sample), sim, scene_to_odom_m, writer, summary);
-      break;
-    case SimStream::kCount: break;
-  }
+  std::visit(Overloaded{[&](const GroundTruthSample& g) { writer->recordTruth(toTruth(g, scene_to_odom_m)); },
+                        [&](const CameraTick& tick) {
+                          ++summary->camera_ticks;
+                          frames->record(tick, sim, scene_to_odom_m, writer, summary);
+                        },
+                        [&](const auto& input) { writer->recordInputArrived(input, e.t_us); }},
+             e.sample);
 }
 
 // The run's identity and the true panel pose in the recorded odometry frame (T_odom_panel: footprint
