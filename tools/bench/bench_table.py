@@ -2,16 +2,25 @@
 """One benchmark table: per-stage time per 688x516 stereo pair beside the DexROV paper's figures, the
 EKF's costs, replay speed against real time and peak resident memory.
 
-  tools/bench/bench_table.py [--build build] [--recording out-default/default.mcap] [--out bench.md]
+  tools/bench/bench_table.py [--build build] [--recording out-default/default.mcap]
+                             [--sea-recording DIVE.mcap | --sea-duration S] [--out bench.md]
 
 Runs the Google Benchmark binaries of build/bin (CPU time, one thread), then `deepnav replay` of a
 recording (default: a 30 s simulated dive it writes with deepnav-sim) for the speed against real time and
-the peak resident memory of the whole replay (vision worker included). Prints Markdown; docs/benchmarks.md
-shows the latest table with the machine it ran on."""
+the peak resident memory of the whole replay (vision worker included). Then the vision worker's time per
+stereo pair, per part, from the frames.csv of that replay and of a murky sea-trial dive
+(tools/sim/scenarios/sea-trial-murky.yaml simulated with board/sim-sea/board.yaml, seed 3, replayed with
+that board; default: the whole 300 s dive): mean, median, p95, p99 and max per part, against the targets
+of issue 20 (mean <= 20 ms, p99 <= 50 ms per pair). Prints Markdown; docs/benchmarks.md shows the latest
+table with the machine it ran on."""
 import argparse
+import csv
 import json
 import os
+import math
 import platform
+import re
+import statistics
 import resource
 import subprocess
 import tempfile
@@ -77,6 +86,7 @@ def human(seconds):
 
 
 def replay_figures(bin_dir, recording):
+    """(dive_s, wall_s, peak MiB, replay output directory) of the replay of the default dive."""
     work = tempfile.mkdtemp(prefix="deepnav_bench_")
     if not recording:
         recording = os.path.join(work, "dive.mcap")
@@ -93,13 +103,88 @@ def replay_figures(bin_dir, recording):
     peak_kib = max(before, resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)
     with open(os.path.join(work, "replay", "summary.json")) as f:
         s = json.load(f)
-    return s["dive_s"], s["wall_s"], peak_kib / 1024.0
+    return s["dive_s"], s["wall_s"], peak_kib / 1024.0, os.path.join(work, "replay")
+
+
+def sea_replay(bin_dir, recording, duration_s):
+    """Replays the murky sea-trial dive (simulating it first when no recording is given); returns the
+    replay's output directory."""
+    work = tempfile.mkdtemp(prefix="deepnav_bench_sea_")
+    board = "board/sim-sea/board.yaml"
+    if not recording:
+        recording = os.path.join(work, "sea.mcap")
+        scenario = "tools/sim/scenarios/sea-trial-murky.yaml"
+        if duration_s:
+            with open(scenario) as f:
+                text = f.read()
+            scenario = os.path.join(work, "sea-trial-murky.yaml")
+            with open(scenario, "w") as f:
+                f.write(re.sub(r"(?m)^duration_s: .*$", f"duration_s: {duration_s}", text))
+        subprocess.run([os.path.join(bin_dir, "deepnav-sim"), "--scenario", scenario, "--board", board,
+                        "--seed", "3", "--no-truth-maps", "--out", recording], check=True, capture_output=True)
+    out = os.path.join(work, "replay")
+    subprocess.run([os.path.join(bin_dir, "deepnav"), "replay", recording, "--board", board, "--out", out],
+                   check=True, capture_output=True)
+    return out
+
+
+# frames.csv columns of the worker time per part (us); "rest" is total_us minus the three: rectification,
+# MDM, markers and the pipeline's glue, which run on every pair.
+PARTS = [("orb_us", "ORB VO"), ("planes_us", "dense stereo + plane VO (stage 2)"),
+         ("map_us", "dense stereo + map insertion (stage 1)"), ("rest", "rectification, MDM, markers, glue"),
+         ("total_us", "whole pair")]
+
+
+def percentile(sorted_values, q):
+    """Nearest-rank percentile (q in [0, 100]) of an ascending list."""
+    rank = max(1, math.ceil(q / 100.0 * len(sorted_values)))
+    return sorted_values[rank - 1]
+
+
+def worker_times(frames_csv):
+    """Per part: (pairs where it ran, mean, median, p95, p99, max) in seconds, from a replay's frames.csv."""
+    per_part = {key: [] for key, _ in PARTS}
+    with open(frames_csv) as f:
+        for row in csv.DictReader(f):
+            us = {k: int(row[k]) for k in ("orb_us", "planes_us", "map_us", "total_us")}
+            us["rest"] = max(0, us["total_us"] - us["orb_us"] - us["planes_us"] - us["map_us"])
+            for key, _ in PARTS:
+                if us[key] > 0 or key in ("rest", "total_us"):
+                    per_part[key].append(us[key] * 1e-6)
+    stats = {}
+    for key, values in per_part.items():
+        if values:
+            v = sorted(values)
+            stats[key] = (len(v), statistics.fmean(v), statistics.median(v), percentile(v, 95), percentile(v, 99),
+                          v[-1])
+    return stats
+
+
+def worker_rows(dive, stats):
+    rows = []
+    for key, label in PARTS:
+        if key not in stats:
+            rows.append(f"| {dive} | {label} | 0 | | | | | |")
+            continue
+        n, mean, median, p95, p99, peak = stats[key]
+        rows.append(f"| {dive} | {label} | {n} | {human(mean)} | {human(median)} | {human(p95)} | {human(p99)} | "
+                    f"{human(peak)} |")
+    return rows
+
+
+def verdict(dive, stats):
+    n, mean, _, _, p99, _ = stats["total_us"]
+    ok = "met" if mean <= 20e-3 and p99 <= 50e-3 else "not met"
+    return (f"{dive}, whole pair: mean {human(mean)} (target <= 20 ms), p99 {human(p99)} (<= 50 ms) over {n} pairs: "
+            f"{ok}")
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--build", default="build")
     ap.add_argument("--recording", help="recording to replay (default: a 30 s simulated dive)")
+    ap.add_argument("--sea-recording", help="murky sea-trial recording to replay (default: simulate one)")
+    ap.add_argument("--sea-duration", type=float, help="simulate only this many seconds of the sea-trial dive")
     ap.add_argument("--out", help="also write the Markdown here")
     args = ap.parse_args()
     bin_dir = os.path.join(args.build, "bin")
@@ -111,10 +196,18 @@ def main():
         if peer:
             paper = f"{peer[0][0]} {human(peer[0][1])}" + (f": ours {t / peer[0][1]:.2f}x its time" if t else "")
         lines.append(f"| {label} | {human(t) if t is not None else 'not run'} | {target} | {paper} |")
-    dive_s, wall_s, peak_mib = replay_figures(bin_dir, args.recording)
+    dive_s, wall_s, peak_mib, default_out = replay_figures(bin_dir, args.recording)
     lines += ["", "| replay (full two-stage pipeline) | value |", "|---|---|",
               f"| dive replayed | {dive_s:.1f} s in {wall_s:.1f} s wall ({dive_s / wall_s:.2f}x real time) |",
               f"| peak resident memory of the replay | {peak_mib:.0f} MiB |"]
+    sea_out = sea_replay(bin_dir, args.sea_recording, args.sea_duration)
+    dives = [("default dive", worker_times(os.path.join(default_out, "frames.csv"))),
+             ("murky sea trial", worker_times(os.path.join(sea_out, "frames.csv")))]
+    lines += ["", "| vision worker, per stereo pair | part | pairs | mean | median | p95 | p99 | max |",
+              "|---|---|---|---|---|---|---|---|"]
+    for dive, stats in dives:
+        lines += worker_rows(dive, stats)
+    lines += [""] + [f"- {verdict(dive, stats)}" for dive, stats in dives if "total_us" in stats]
     text = "\n".join(lines)
     print(text)
     if args.out:
