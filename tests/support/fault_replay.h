@@ -15,7 +15,7 @@
 
 #include "base/so3.h"
 #include "board/replay/bench_replay.h"
-#include "board/replay/replay_fault_injector.h"
+#include "tests/support/replay_fault_injector.h"
 #include "tests/support/test_dive.h"
 
 namespace deepnav::testing {

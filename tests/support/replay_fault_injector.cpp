@@ -1,4 +1,4 @@
-#include "board/replay/replay_fault_injector.h"
+#include "tests/support/replay_fault_injector.h"
 
 #include <algorithm>
 #include <cmath>
