@@ -18,11 +18,12 @@ namespace deepnav {
 // Eigen::Quaterniond; kDurationS is written in seconds and lands in an int64 microseconds (TimeUs).
 // kChoice lands in a std::string; kEnum is written as kChoice is and lands in an enum of underlying type
 // int whose value is the written choice's position in `choices` (declared with DEEPNAV_PARAM_ENUM_FIELD).
-enum class ParamType { kBool, kInt, kDouble, kString, kChoice, kVec3, kRotation, kDurationS, kEnum };
+// kSize is written and listed as kInt is and lands in a std::size_t (a capacity, a count).
+enum class ParamType { kBool, kInt, kDouble, kString, kChoice, kVec3, kRotation, kDurationS, kEnum, kSize };
 
 // One parameter of a module's config, declared once, next to the struct it lands in: the key a board file
 // writes in the module's section, its type, unit, inclusive range (kInt, kDouble, kVec3 each element,
-// kDurationS in seconds, kRotation each written angle) and meaning. Its default is the field's initialiser
+// kDurationS in seconds, kRotation each written angle, kSize) and meaning. Its default is the field's initialiser
 // in the struct. The module validates its config against these ranges (checkParamRanges) and the board
 // reads its files through the same table (board/config/param_table.h), so the two cannot disagree.
 template <typename Config>
@@ -91,7 +92,8 @@ inline std::string paramRangeText(ParamType type, double min, double max, const 
     case ParamType::kString: return "a string";
     case ParamType::kChoice:
     case ParamType::kEnum: s << "one of " << choices; return s.str();
-    case ParamType::kInt: s << "an integer in [" << min << ", " << max << "]"; return s.str();
+    case ParamType::kInt:
+    case ParamType::kSize: s << "an integer in [" << min << ", " << max << "]"; return s.str();
     case ParamType::kDouble: s << "a number in [" << min << ", " << max << "]"; return s.str();
     case ParamType::kVec3: s << "a list of 3 numbers, each in [" << min << ", " << max << "]"; return s.str();
     case ParamType::kRotation: s << "[roll, pitch, yaw], each in [" << min << ", " << max << "]"; return s.str();
@@ -114,6 +116,7 @@ inline bool paramInRange(ParamType type, double min, double max, const char* cho
     }
     case ParamType::kEnum: return !paramChoiceAt(choices, paramEnumValue(target)).empty();
     case ParamType::kInt: return in(*static_cast<const int*>(target));
+    case ParamType::kSize: return in(static_cast<double>(*static_cast<const std::size_t*>(target)));
     case ParamType::kDouble: return in(*static_cast<const double*>(target));
     case ParamType::kVec3: {
       const auto& v = *static_cast<const Eigen::Vector3d*>(target);

@@ -13,7 +13,7 @@ using P = ParamSpec<BoardConfig>;
 
 #define DEEPNAV_FIELD(expr) [](BoardConfig& c) -> void* { return &c.expr; }
 
-// Up to the camera port's keys (the port's and the PinAx mapping's follow).
+// Up to the buffers' own keys (the live input capacities follow).
 const std::array kBoardHeadParams = {
     P{"loop.rate_hz", ParamType::kInt, "Hz", 10, 1000, "100", "", "nav loop tick rate",
       DEEPNAV_FIELD(loop.rate_hz)},
@@ -31,18 +31,10 @@ const std::array kBoardHeadParams = {
     P{"loop.output_tau_s", ParamType::kDouble, "s", 0, 5, "0.3", "",
       "published pose follows the EKF's corrections with this time constant (output predictor; 0: none)",
       DEEPNAV_FIELD(loop.output_tau_s)},
-    P{"buffers.imu", ParamType::kInt, "samples", 8, 65536, "512", "", "IMU ring capacity",
-      DEEPNAV_FIELD(buffers.imu)},
-    P{"buffers.dvl", ParamType::kInt, "samples", 4, 65536, "64", "", "DVL ring capacity",
-      DEEPNAV_FIELD(buffers.dvl)},
-    P{"buffers.heading", ParamType::kInt, "samples", 4, 65536, "64", "", "compass ring capacity",
-      DEEPNAV_FIELD(buffers.heading)},
-    P{"buffers.attitude", ParamType::kInt, "samples", 4, 65536, "64", "", "AHRS attitude ring capacity",
-      DEEPNAV_FIELD(buffers.attitude)},
-    P{"buffers.depth", ParamType::kInt, "samples", 4, 65536, "64", "", "depth ring capacity",
-      DEEPNAV_FIELD(buffers.depth)},
-    P{"buffers.frames", ParamType::kInt, "pairs", 2, 64, "6", "", "stereo frames in the preallocated pool",
-      DEEPNAV_FIELD(buffers.frames)},
+};
+
+// Between the live input capacities (liveInputCapacityParams()) and the camera port's keys.
+const std::array kBoardBuffersTailParams = {
     P{"buffers.vision_results", ParamType::kInt, "results", 4, 4096, "32", "", "vision result ring capacity",
       DEEPNAV_FIELD(buffers.vision_results)},
     P{"buffers.record", ParamType::kInt, "records", 64, 1048576, "8192", "",
@@ -289,6 +281,9 @@ constexpr BoardDefault kBoardDefaults[] = {{"vision.orb_reset_after_lost_frames"
 // Every key of a board file, in the order `deepnav config --list` prints them, bound to `c`.
 std::vector<ParamSpecView> boardParams(BoardConfig& c) {
   std::vector<ParamSpecView> views = bindParams(kBoardHeadParams, c);
+  appendModuleParams(liveInputCapacityParams(), kBuffersSection, c.buffers.inputs, &views);
+  const std::vector<ParamSpecView> buffers = bindParams(kBoardBuffersTailParams, c);
+  views.insert(views.end(), buffers.begin(), buffers.end());
   appendModuleParams(flatPortParams(), kCameraPortSection, c.camera.port.pinax.port, &views);
   appendModuleParams(pinaxParams(), kCameraPortSection, c.camera.port.pinax, &views);
   const std::vector<ParamSpecView> source = bindParams(kCameraSourceParams, c);

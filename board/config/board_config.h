@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "board/config/param_table.h"
+#include "drivers/buffers/live_inputs.h"
 #include "drivers/camera/camera_config.h"
 #include "drivers/recording/recording_writer.h"
 #include "nav/ekf/ekf_config.h"
@@ -19,7 +20,7 @@ namespace deepnav {
 
 // Everything one vehicle's board.yaml sets. Each field is declared once, with unit, default and range:
 // the board's own in board_config.cpp, a module's next to its config struct (ekfParams(), stageParams(),
-// panelPoseParams(), markerCovarianceParams(), flatPortParams(), pinaxParams(), visionPipelineParams()), whose structs are held here as the module reads them (no
+// liveInputCapacityParams(), panelPoseParams(), markerCovarianceParams(), flatPortParams(), pinaxParams(), visionPipelineParams()), whose structs are held here as the module reads them (no
 // copies). The comments here only say what the group is for.
 struct BoardConfig {
   struct Loop {
@@ -31,12 +32,7 @@ struct BoardConfig {
     double output_tau_s;     // time constant of the published pose's smoothing (0: the EKF's pose)
   } loop;
   struct Buffers {
-    int imu;                 // ring capacities, in samples
-    int dvl;
-    int heading;
-    int attitude;
-    int depth;
-    int frames;              // stereo frames in the pool
+    LiveInputCapacities inputs;  // the drivers' rings and frame pool (drivers/buffers/live_inputs.h): buffers.imu ... frames
     int vision_results;
     int record;              // recorder queue, in records
   } buffers;

@@ -76,6 +76,14 @@ bool applyScalar(const ParamSpecView& p, const YAML::Node& n, const std::string&
       *static_cast<int*>(p.target) = static_cast<int>(v);
       return true;
     }
+    case ParamType::kSize: {
+      double v = 0;
+      if (!parseNumber(n, &v) || std::floor(v) != v) return fail(error, file, p, "is '" + show(n) + "'");
+      // The declared range keeps v at or above 0 before the conversion (a size has no negative values).
+      if (!inRange(p, v) || v < 0) return fail(error, file, p, "is " + show(n) + ", out of range");
+      *static_cast<std::size_t*>(p.target) = static_cast<std::size_t>(v);
+      return true;
+    }
     case ParamType::kDouble: {
       double v = 0;
       if (!parseNumber(n, &v)) return fail(error, file, p, "is '" + show(n) + "'");
@@ -208,6 +216,7 @@ std::string valueText(const ParamSpecView& p) {
   switch (p.type) {
     case ParamType::kBool: return *static_cast<const bool*>(p.target) ? "true" : "false";
     case ParamType::kInt: return std::to_string(*static_cast<const int*>(p.target));
+    case ParamType::kSize: return std::to_string(*static_cast<const std::size_t*>(p.target));
     case ParamType::kDouble: return numberText(*static_cast<const double*>(p.target));
     case ParamType::kString:
     case ParamType::kChoice: {
@@ -243,9 +252,9 @@ std::string describeParams(const std::vector<ParamSpecView>& params) {
   std::ostringstream s;
   s << "| key | type | unit | default | allowed | meaning |\n|---|---|---|---|---|---|\n";
   for (const auto& p : params) {
-    // A kEnum is written as a choice: the file cannot tell them apart.
+    // A kEnum is written as a choice, a kSize as an int: the file cannot tell them apart.
     static const char* kTypes[] = {"bool", "int", "double", "string", "choice", "vec3", "rotation", "duration",
-                                   "choice"};
+                                   "choice", "int"};
     const std::string default_text = p.default_text != nullptr ? p.default_text : valueText(p);
     s << "| `" << p.key << "` | " << kTypes[static_cast<int>(p.type)] << " | " << p.unit << " | `"
       << default_text << "` | " << markdownCell(rangeText(p)) << " | " << markdownCell(p.doc) << " |\n";

@@ -10,16 +10,11 @@ namespace deepnav {
 
 bool LiveLoop::init(const VehicleSetup& setup, const std::string& recording_path, std::string* error) {
   const BoardConfig& c = setup.config;
-  LiveInputCapacities caps;
-  caps.imu = static_cast<std::size_t>(c.buffers.imu);
-  caps.dvl = static_cast<std::size_t>(c.buffers.dvl);
-  caps.heading = static_cast<std::size_t>(c.buffers.heading);
-  caps.attitude = static_cast<std::size_t>(c.buffers.attitude);
-  caps.depth = static_cast<std::size_t>(c.buffers.depth);
-  caps.frames = static_cast<std::size_t>(c.buffers.frames);
+  LiveInputCapacities caps = c.buffers.inputs;
   caps.width_px = c.camera.width_px;
   caps.height_px = c.camera.height_px;
   caps.channels = c.camera.channels;
+  if (!validateLiveInputCapacities(caps, error)) return false;
   if (!inputs_.allocate(caps) || !vision_results_.allocate(static_cast<std::size_t>(c.buffers.vision_results))) {
     if (error) *error = "loop: cannot allocate the input buffers (see buffers.* in the board file)";
     return false;
@@ -47,7 +42,7 @@ bool LiveLoop::init(const VehicleSetup& setup, const std::string& recording_path
     QueuedRecorder::MetadataList metadata = recordingMetadata(setup);
     metadata.insert(metadata.end(), extra_metadata_.begin(), extra_metadata_.end());
     if (!recorder_.start(recording_path, recordingOptions(c), metadata,
-                         static_cast<std::size_t>(c.buffers.record), static_cast<std::size_t>(c.buffers.frames),
+                         static_cast<std::size_t>(c.buffers.record), c.buffers.inputs.frames,
                          &inputs_.pool, error)) {
       return false;
     }

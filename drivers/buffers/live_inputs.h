@@ -1,19 +1,32 @@
 #pragma once
 #include <cstddef>
+#include <span>
+#include <string>
 #include <type_traits>
 
+#include "base/param_decl.h"
 #include "drivers/buffers/frame_pool.h"
 #include "drivers/buffers/spsc_ring.h"
 #include "nav/types/input_sample.h"
 
 namespace deepnav {
 
-// Capacities of the live input buffers, from the board config.
+// Capacities of the live input buffers. The ring and pool sizes are the board's buffers.* keys
+// (liveInputCapacityParams()); the frame size is the camera's (camera.width_px, height_px, channels), which the
+// loop sets before allocating.
 struct LiveInputCapacities {
-  std::size_t imu = 512, dvl = 64, heading = 64, attitude = 64, depth = 64;
-  std::size_t frames = 6;
+  std::size_t imu = 512, dvl = 64, heading = 64, attitude = 64, depth = 64;  // samples
+  std::size_t frames = 6;                                                    // stereo pairs in the pool
   int width_px = 688, height_px = 516, channels = 1;
 };
+
+// The board keys of the capacities (section kBuffersSection of a board file): unit, range and meaning,
+// declared once; the defaults are the initialisers above.
+inline constexpr const char* kBuffersSection = "buffers";
+std::span<const ParamDecl<LiveInputCapacities>> liveInputCapacityParams();
+
+// False with a message naming the field and the key when a capacity is outside its declared range.
+bool validateLiveInputCapacities(const LiveInputCapacities& c, std::string* error);
 
 // Everything drivers hand to the nav loop: one single-producer/single-consumer ring per sensor (each
 // fed by one driver thread) and the stereo frame pool, whose filled slots travel by index to the vision

@@ -27,7 +27,7 @@ std::string numberText(double v) {
 
 // Values just outside [min, max], written as a board file writes them.
 std::vector<std::string> outsideValues(ParamType type, double min, double max) {
-  const double step = type == ParamType::kInt ? 1.0 : 0.01 * std::max(1.0, std::abs(max - min));
+  const double step = type == ParamType::kInt || type == ParamType::kSize ? 1.0 : 0.01 * std::max(1.0, std::abs(max - min));
   std::vector<std::string> out;
   for (double v : {min - step, max + step}) {
     out.push_back(type == ParamType::kVec3 ? "[0, 0, " + numberText(v) + "]" : numberText(v));
@@ -55,6 +55,7 @@ void setField(const ParamDecl<Config>& d, Config* c, double v) {
   void* target = d.field(*c);
   switch (d.type) {
     case ParamType::kInt: *static_cast<int*>(target) = static_cast<int>(v); break;
+    case ParamType::kSize: *static_cast<std::size_t*>(target) = static_cast<std::size_t>(v); break;
     case ParamType::kDouble: *static_cast<double*>(target) = v; break;
     case ParamType::kDurationS: *static_cast<TimeUs*>(target) = sToUs(v); break;
     case ParamType::kVec3: *static_cast<Eigen::Vector3d*>(target) = Eigen::Vector3d(0.0, 0.0, v); break;
@@ -66,8 +67,8 @@ template <typename Config>
 void expectOneRange(std::span<const ParamDecl<Config>> decls, const char* section,
                     bool (*validate)(const Config&, std::string*)) {
   for (const auto& d : decls) {
-    if (d.type != ParamType::kInt && d.type != ParamType::kDouble && d.type != ParamType::kDurationS &&
-        d.type != ParamType::kVec3) {
+    if (d.type != ParamType::kInt && d.type != ParamType::kSize && d.type != ParamType::kDouble &&
+        d.type != ParamType::kDurationS && d.type != ParamType::kVec3) {
       continue;
     }
     const std::string key = std::string(section) + "." + d.key;
@@ -98,6 +99,33 @@ TEST(BoardModuleParams, TheBoardAndTheModuleRefuseTheSameValues) {
   expectOneRange<VisionPipelineConfig>(visionPipelineParams(), kVisionSection, validateVisionPipelineConfig);
   expectOneRange<FlatPort>(flatPortParams(), kCameraPortSection, validateFlatPort);
   expectOneRange<PinaxConfig>(pinaxParams(), kCameraPortSection, validatePinaxConfig);
+  expectOneRange<LiveInputCapacities>(liveInputCapacityParams(), kBuffersSection, validateLiveInputCapacities);
+}
+
+TEST(BoardModuleParams, BufferKeysLandInTheCapacitiesTheLoopAllocates) {
+  const std::string yaml = "buffers:\n  imu: 1024\n  depth: 16\n  frames: 3\n  record: 100\n";
+  BoardConfig c{};
+  std::string error;
+  ASSERT_TRUE(loadBoardConfigText(yaml, "board.yaml", &c, &error)) << error;
+  EXPECT_EQ(c.buffers.inputs.imu, 1024u);
+  EXPECT_EQ(c.buffers.inputs.depth, 16u);
+  EXPECT_EQ(c.buffers.inputs.frames, 3u);
+  EXPECT_EQ(c.buffers.inputs.dvl, LiveInputCapacities{}.dvl);
+  EXPECT_EQ(c.buffers.record, 100);
+  // The defaults are the capacities' initialisers, listed as the integers they always were
+  const BoardConfig d = defaultBoardConfig();
+  EXPECT_EQ(d.buffers.inputs.imu, 512u);
+  EXPECT_EQ(d.buffers.inputs.heading, 64u);
+  EXPECT_EQ(d.buffers.inputs.frames, 6u);
+  const std::string table = describeBoardParams();
+  EXPECT_NE(table.find("| `buffers.imu` | int | samples | `512` | an integer in [8, 65536] | IMU ring capacity |"),
+            std::string::npos);
+  EXPECT_NE(table.find("| `buffers.frames` | int | pairs | `6` | an integer in [2, 64] |"), std::string::npos);
+  // AND a negative or fractional capacity is refused with the key's message
+  EXPECT_FALSE(loadBoardConfigText("buffers:\n  dvl: -4\n", "board.yaml", &c, &error));
+  EXPECT_EQ(error, "board.yaml: key 'buffers.dvl' is -4, out of range; allowed: an integer in [4, 65536] (samples)");
+  EXPECT_FALSE(loadBoardConfigText("buffers:\n  dvl: 6.5\n", "board.yaml", &c, &error));
+  EXPECT_EQ(error, "board.yaml: key 'buffers.dvl' is '6.5'; allowed: an integer in [4, 65536] (samples)");
 }
 
 TEST(BoardModuleParams, CameraPortKeysLandInThePinaxConfigTheRectificationUses) {
