@@ -8,6 +8,8 @@
 #include <cerrno>
 #include <cstring>
 
+#include "base/fail.h"
+
 namespace deepnav {
 namespace {
 
@@ -15,11 +17,6 @@ std::string sizeText(std::size_t bytes) {
   if (bytes % (1024u * 1024u) == 0) return std::to_string(bytes / (1024u * 1024u)) + " MiB";
   if (bytes % 1024u == 0) return std::to_string(bytes / 1024u) + " KiB";
   return std::to_string(bytes) + " bytes";
-}
-
-bool fail(std::string* error, const std::string& message) {
-  if (error) *error = message;
-  return false;
 }
 
 }  // namespace

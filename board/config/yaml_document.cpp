@@ -6,6 +6,7 @@
 
 #include <yaml-cpp/eventhandler.h>
 
+#include "base/fail.h"
 #include "board/config/text_file.h"
 
 namespace deepnav {
@@ -102,11 +103,6 @@ class DuplicateKeyFinder final : public YAML::EventHandler {
   std::vector<Level> stack_;
   std::string problem_;
 };
-
-bool fail(std::string* error, const std::string& message) {
-  if (error) *error = message;
-  return false;
-}
 
 }  // namespace
 
