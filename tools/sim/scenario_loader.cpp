@@ -12,6 +12,7 @@
 #include "tools/sim/yaml_section.h"
 #include "board/config/text_file.h"
 #include "board/config/yaml_document.h"
+#include "vision/calib/flat_port.h"
 
 namespace deepnav::sim {
 
@@ -303,6 +304,19 @@ void readCameraSensor(YamlSection s, CameraSensorConfig* c) {
   s.finish();
 }
 
+// A flat port key of the scenario, read with the range and unit the port declares (flatPortParams(),
+// vision/calib/flat_port.h), the board's; a dimensionless unit ("-") is written as none in messages.
+// The rule between two keys (water denser than the housing's air) is the port's, checked when the
+// renderer builds it (tools/sim/render/flat_port.cpp).
+void readPortKey(YamlSection* port, const char* key, FlatPort* out) {
+  for (const ParamDecl<FlatPort>& d : flatPortParams()) {
+    if (std::string(d.key) != key) continue;
+    const char* unit = std::string(d.unit) == "-" ? "" : d.unit;
+    port->number(key, static_cast<double*>(d.field(*out)), d.min, d.max, unit);
+    return;
+  }
+}
+
 // camera.preset first (it sets the rig), then every explicit key, which overrides it.
 void readCamera(YamlSection s, YamlReadErrors* errors, CameraConfig* c) {
   const int preset = s.choice("preset", {"none", "dexrov"});
@@ -321,10 +335,9 @@ void readCamera(YamlSection s, YamlReadErrors* errors, CameraConfig* c) {
   YamlSection port = s.section("port");
   const int model = port.choice("model", {"none", "flat"});
   if (model >= 0) c->flat_port = model == 1;
-  port.number("pinhole_to_glass_m", &c->port.pinhole_to_glass_m, 0.0, 0.5, "m");
-  port.number("glass_thickness_m", &c->port.glass_thickness_m, 0.0, 0.2, "m");
-  port.number("n_glass", &c->port.n_glass, 1.0, 3.0, "");
-  port.number("n_water", &c->port.n_water, 1.01, 2.0, "");
+  for (const char* key : {"pinhole_to_glass_m", "glass_thickness_m", "n_glass", "n_water"}) {
+    readPortKey(&port, key, &c->port);
+  }
   port.finish();
   s.boolean("motion_blur", &c->motion_blur);
   const int noise = s.choice("noise_model", {"water_preset", "emva1288"});
