@@ -1,6 +1,8 @@
 #include "tools/sim/scenario_loader.h"
 #include "tests/support/source_paths.h"
+#include "vision/calib/flat_port.h"
 
+#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -91,6 +93,27 @@ TEST(SimScenarioLoader, RejectsOutOfRangeWithKeyAndRange) {
             "test.yaml: key 'trajectory.face_alignment' = -0.5 is out of range [0, 1] (fraction)");
   EXPECT_EQ(parseError("faults: [{stream: imu, kind: time_jitter, t_start_s: 1, t_end_s: 2, params: {std_ms: 5000}}]"),
             "test.yaml: key 'faults[0].params.std_ms' = 5000 is out of range [0, 1000] ms");
+}
+
+TEST(SimScenarioLoader, CameraPortRangesAreThePortsDeclaredOnes) {
+  // The flat port's keys take the ranges the port declares (flatPortParams(), the board's camera.port.*)
+  for (const ParamDecl<FlatPort>& d : flatPortParams()) {
+    if (std::string(d.key) == "n_air") continue;  // the scenario's housing is always air
+    const std::string unit = std::string(d.unit) == "-" ? "" : d.unit;
+    std::ostringstream range;
+    range << "[" << d.min << ", " << d.max << "] " << unit;
+    EXPECT_NE(parseError("camera: {port: {" + std::string(d.key) + ": 7}}").find(range.str()), std::string::npos)
+        << d.key;
+  }
+  EXPECT_EQ(parseError("camera: {port: {n_glass: 3.5}}"),
+            "test.yaml: key 'camera.port.n_glass' = 3.5 is out of range [1, 3] ");
+  Scenario s;
+  std::string error;
+  ASSERT_TRUE(parseScenario("camera: {port: {model: flat, glass_thickness_m: 0.2, n_water: 1.2}}", "test.yaml", &s,
+                            &error))
+      << error;
+  EXPECT_EQ(s.camera.port.glass_thickness_m, 0.2);
+  EXPECT_EQ(s.camera.port.n_water, 1.2);
 }
 
 TEST(SimScenarioLoader, RejectsWrongTypesAndChoices) {
