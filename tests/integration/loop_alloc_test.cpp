@@ -15,15 +15,6 @@
 namespace deepnav {
 namespace {
 
-struct Counting {
-  Counting() {
-    g_allocations.store(0);
-    t_counting = true;
-  }
-  ~Counting() { t_counting = false; }
-  long count() const { return g_allocations.load(); }
-};
-
 std::vector<sim::SimEvent> simulate(double duration_s) {
   sim::Scenario scenario;
   std::string error;

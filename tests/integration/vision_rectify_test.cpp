@@ -25,16 +25,6 @@
 namespace deepnav {
 namespace {
 
-class Counting {
- public:
-  Counting() : start_(g_allocations.load()) { t_counting = true; }
-  ~Counting() { t_counting = false; }
-  long count() const { return g_allocations.load() - start_; }
-
- private:
-  long start_;
-};
-
 Eigen::Isometry3d poseOf(const sim::ViewPose& v) {
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
   T.linear() = v.R_panel_cam.cast<double>();

@@ -51,16 +51,6 @@ void onStage(VisionStage stage) {
   g_running = static_cast<std::size_t>(stage);
 }
 
-class Counting {
- public:
-  Counting() : start_(g_allocations.load()) { t_counting = true; }
-  ~Counting() { t_counting = false; }
-  long count() const { return g_allocations.load() - start_; }
-
- private:
-  long start_;
-};
-
 Eigen::Isometry3d leftCameraInOdom(const CameraTick& tick) {
   Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
   T.linear() = tick.q_odom_left_cam.toRotationMatrix();
