@@ -30,6 +30,7 @@ bool GridOrbExtractor::init(const OrbExtractorConfig& config, int width_px, int 
   height_px_ = height_px;
   levels_.assign(config.n_levels, cv::Mat());
   smoothed_.assign(config.n_levels, cv::Mat());
+  brief_offsets_.assign(config.n_levels, SteeredBrief::Offsets());
   scales_.assign(config.n_levels, 1.0);
   cell_budget_.assign(config.n_levels, 0);
   capacity_ = 0;
@@ -40,6 +41,7 @@ bool GridOrbExtractor::init(const OrbExtractorConfig& config, int width_px, int 
     if (w < min_side || h < min_side) return false;
     if (l > 0) levels_[l].create(h, w, CV_8UC1);
     smoothed_[l].create(h, w, CV_8UC1);
+    brief_.fillOffsets(static_cast<int>(smoothed_[l].step1()), &brief_offsets_[l]);
     cell_budget_[l] = std::max(
         1, static_cast<int>(std::lround(config.max_features_per_cell / (scales_[l] * scales_[l]))));
     capacity_ += cell_budget_[l] * config.grid_cols * config.grid_rows;
@@ -69,6 +71,9 @@ void GridOrbExtractor::extractLevel(int level, std::vector<OrbFeature>* features
                                     std::vector<OrbDescriptor>* descriptors) {
   const cv::Mat& image = levels_[level];
   cv::GaussianBlur(image, smoothed_[level], cv::Size(0, 0), config_.smoothing_sigma_px);
+  SteeredBrief::Offsets& offsets = brief_offsets_[level];
+  const int smoothed_step = static_cast<int>(smoothed_[level].step1());
+  if (offsets.step != smoothed_step) brief_.fillOffsets(smoothed_step, &offsets);
   const int border = SteeredBrief::kBorderPx;
   const int usable_w = image.cols - 2 * border;
   const int usable_h = image.rows - 2 * border;
@@ -93,7 +98,7 @@ void GridOrbExtractor::extractLevel(int level, std::vector<OrbFeature>* features
         f.level = level;
         features->push_back(f);
         descriptors->emplace_back();
-        brief_.describe(smoothed_[level], x, y, f.angle_rad, &descriptors->back());
+        brief_.describe(smoothed_[level], offsets, x, y, f.angle_rad, &descriptors->back());
       }
     }
   }

@@ -57,6 +57,7 @@ class GridOrbExtractor {
   int capacity_ = 0;
   std::vector<cv::Mat> levels_;
   std::vector<cv::Mat> smoothed_;
+  std::vector<SteeredBrief::Offsets> brief_offsets_;  // per level, for smoothed_[level]'s step
   std::vector<double> scales_;
   std::vector<int> cell_budget_;
   std::vector<int> cell_threshold_;         // per level and cell; 0 until the first image

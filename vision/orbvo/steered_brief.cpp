@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <opencv2/core/hal/intrin.hpp>
 
 namespace deepnav {
 namespace {
@@ -30,6 +31,14 @@ void gaussianPointInDisc(std::uint64_t* state, double sigma, double r, double* x
   }
 }
 
+// The rotation bin of angle_rad (kAngleBins bins, nearest).
+int angleBin(float angle_rad) {
+  constexpr double kBinRad = 2.0 * std::numbers::pi / SteeredBrief::kAngleBins;
+  int bin = static_cast<int>(std::lround(angle_rad / kBinRad)) % SteeredBrief::kAngleBins;
+  if (bin < 0) bin += SteeredBrief::kAngleBins;
+  return bin;
+}
+
 }  // namespace
 
 SteeredBrief::SteeredBrief() {
@@ -54,10 +63,73 @@ SteeredBrief::SteeredBrief() {
   for (int dy = 0; dy <= kOrientationRadiusPx; ++dy) {
     disc_half_width_[dy] = static_cast<int>(std::floor(
         std::sqrt(static_cast<double>(kOrientationRadiusPx * kOrientationRadiusPx - dy * dy))));
+    for (int j = 0; j < 32; ++j) {
+      const int u = j - kOrientationRadiusPx;
+      const bool inside = std::abs(u) <= disc_half_width_[dy];
+      u_weight_[dy][j] = static_cast<std::int16_t>(inside ? u : 0);
+      dy_weight_[dy][j] = static_cast<std::int16_t>(inside ? dy : 0);
+    }
   }
 }
 
 float SteeredBrief::orientationRad(const cv::Mat& image, int x, int y) const {
+#if CV_SIMD128
+  // 32 columns from x - 15 (x + 16 lies inside the image: x <= cols - kBorderPx - 1), widened to
+  // 16 bits; products and pair sums fit 32 bits (|u| <= 15, pixel sums <= 510).
+  const int step = static_cast<int>(image.step1());
+  const std::uint8_t* first = image.ptr<std::uint8_t>(y) + x - kOrientationRadiusPx;
+  const auto widen = [](const std::uint8_t* p, cv::v_int16x8 out[4]) {
+    cv::v_uint16x8 a, b, c, d;
+    cv::v_expand(cv::v_load(p), a, b);
+    cv::v_expand(cv::v_load(p + 16), c, d);
+    out[0] = cv::v_reinterpret_as_s16(a);
+    out[1] = cv::v_reinterpret_as_s16(b);
+    out[2] = cv::v_reinterpret_as_s16(c);
+    out[3] = cv::v_reinterpret_as_s16(d);
+  };
+  cv::v_int32x4 m10 = cv::v_setzero_s32();
+  cv::v_int32x4 m01 = cv::v_setzero_s32();
+  cv::v_int16x8 below[4], above[4];
+  widen(first, below);
+  for (int k = 0; k < 4; ++k) m10 += cv::v_dotprod(below[k], cv::v_load(&u_weight_[0][8 * k]));
+  for (int dy = 1; dy <= kOrientationRadiusPx; ++dy) {
+    widen(first + dy * step, below);
+    widen(first - dy * step, above);
+    for (int k = 0; k < 4; ++k) {
+      m10 += cv::v_dotprod(below[k] + above[k], cv::v_load(&u_weight_[dy][8 * k]));
+      m01 += cv::v_dotprod(below[k] - above[k], cv::v_load(&dy_weight_[dy][8 * k]));
+    }
+  }
+  return static_cast<float>(std::atan2(static_cast<double>(cv::v_reduce_sum(m01)),
+                                       static_cast<double>(cv::v_reduce_sum(m10))));
+#else
+  return orientationRadScalar(image, x, y);
+#endif
+}
+
+void SteeredBrief::fillOffsets(int step, Offsets* out) const {
+  out->step = step;
+  for (int b = 0; b < kAngleBins; ++b) {
+    for (int k = 0; k < 2 * kBits; ++k) {
+      out->offset[b][k] = pairs_[b][2 * k + 1] * step + pairs_[b][2 * k];
+    }
+  }
+}
+
+void SteeredBrief::describe(const cv::Mat& smoothed, const Offsets& offsets, int x, int y,
+                            float angle_rad, OrbDescriptor* out) const {
+  const int* offset = offsets.offset[angleBin(angle_rad)].data();
+  const std::uint8_t* centre = smoothed.ptr<std::uint8_t>(y) + x;
+  for (int word = 0; word < 4; ++word) {
+    std::uint64_t bits = 0;
+    for (int i = 0; i < 64; ++i, offset += 2) {
+      bits |= static_cast<std::uint64_t>(centre[offset[0]] < centre[offset[1]]) << i;
+    }
+    (*out)[word] = bits;
+  }
+}
+
+float SteeredBrief::orientationRadScalar(const cv::Mat& image, int x, int y) const {
   const int step = static_cast<int>(image.step1());
   const std::uint8_t* centre = image.ptr<std::uint8_t>(y) + x;
   int m10 = 0;
@@ -77,10 +149,7 @@ float SteeredBrief::orientationRad(const cv::Mat& image, int x, int y) const {
 
 void SteeredBrief::describe(const cv::Mat& smoothed, int x, int y, float angle_rad,
                             OrbDescriptor* out) const {
-  constexpr double kBinRad = 2.0 * std::numbers::pi / kAngleBins;
-  int bin = static_cast<int>(std::lround(angle_rad / kBinRad)) % kAngleBins;
-  if (bin < 0) bin += kAngleBins;
-  const std::int8_t* pair = pairs_[bin].data();
+  const std::int8_t* pair = pairs_[angleBin(angle_rad)].data();
   const int step = static_cast<int>(smoothed.step1());
   const std::uint8_t* centre = smoothed.ptr<std::uint8_t>(y) + x;
   for (int word = 0; word < 4; ++word) {

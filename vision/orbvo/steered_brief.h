@@ -25,15 +25,33 @@ class SteeredBrief {
   SteeredBrief();
 
   // Orientation of the corner at integer (x, y) of `image` (CV_8UC1), >= kBorderPx from every side.
+  // The moments are exact integer sums, vectorised with OpenCV's universal intrinsics (NEON on
+  // aarch64); orientationRadScalar is the plain loop, kept as the tests' reference.
   float orientationRad(const cv::Mat& image, int x, int y) const;
+  float orientationRadScalar(const cv::Mat& image, int x, int y) const;
 
   // Descriptor of the patch centred at integer (x, y) of `smoothed` (CV_8UC1), >= kBorderPx inside.
   void describe(const cv::Mat& smoothed, int x, int y, float angle_rad, OrbDescriptor* out) const;
+
+  // The sample pairs as byte offsets from the centre pixel for one row step (bytes), per angle bin
+  // (p, q interleaved): describe() without the per-bit address arithmetic.
+  struct Offsets {
+    int step = 0;
+    std::array<std::array<int, 2 * kBits>, kAngleBins> offset{};
+  };
+  void fillOffsets(int step, Offsets* out) const;
+  // Same bits as describe(); `offsets` must be filled for smoothed.step1().
+  void describe(const cv::Mat& smoothed, const Offsets& offsets, int x, int y, float angle_rad,
+                OrbDescriptor* out) const;
 
  private:
   // Per angle bin, per bit: (dx_p, dy_p, dx_q, dy_q).
   std::array<std::array<std::int8_t, 4 * kBits>, kAngleBins> pairs_{};
   std::array<int, kOrientationRadiusPx + 1> disc_half_width_{};  // half chord of the disc per |dy|
+  // Per |dy|, over the 32 columns x-15 .. x+16: the column's u (m10 weight) and |dy| (m01 weight)
+  // inside the disc's chord, 0 outside.
+  std::array<std::array<std::int16_t, 32>, kOrientationRadiusPx + 1> u_weight_{};
+  std::array<std::array<std::int16_t, 32>, kOrientationRadiusPx + 1> dy_weight_{};
 };
 
 }  // namespace deepnav
