@@ -108,15 +108,10 @@ void AravisStereoCamera::notifyControlLost(int side) {
 }
 
 bool AravisStereoCamera::open(std::string* error) {
-  if (!validateCameraSourceConfig(config_, error)) return false;
-  parsePixelFormat(config_.pixel_format, &format_);
-  for (auto& s : sides_) {
-    if (!openSide(s, error)) {
-      for (auto& t : sides_) closeSide(t);
-      return false;
-    }
-  }
-  return true;
+  if (!validateCameraSourceConfig(config_, error, &format_)) return false;
+  if (openSide(sides_[0], error) && openSide(sides_[1], error)) return true;
+  for (auto& s : sides_) closeSide(s);  // both cameras or neither
+  return false;
 }
 
 bool AravisStereoCamera::openSide(Side& s, std::string* error) {
@@ -276,11 +271,8 @@ bool AravisStereoCamera::startSide(Side& s, std::string* error) {
 }
 
 bool AravisStereoCamera::start(FramePool* pool, SpscRing<int>* frames, std::string* error) {
-  if (!checkFramePool(config_, pool, frames, error)) return false;
-  if (sides_[0].camera == nullptr || sides_[1].camera == nullptr) {
-    if (error) *error = "camera: start() before a successful open()";
-    return false;
-  }
+  const bool cameras_open = sides_[0].camera != nullptr && sides_[1].camera != nullptr;
+  if (!checkStart(config_, pool, frames, cameras_open, error)) return false;
   writer_ = std::make_unique<StereoPairWriter>(pool, frames, &counters_);
   for (auto& s : sides_) {
     if (!startSide(s, error)) return false;

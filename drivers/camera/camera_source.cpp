@@ -9,17 +9,18 @@
 
 namespace deepnav {
 
-bool checkFramePool(const CameraSourceConfig& c, const FramePool* pool, const SpscRing<int>* frames,
-                    std::string* error) {
+bool checkStart(const CameraSourceConfig& c, const FramePool* pool, const SpscRing<int>* frames, bool cameras_open,
+                std::string* error) {
   if (pool == nullptr || frames == nullptr || pool->size() == 0) return fail(error, "camera: no frame pool");
   const StereoFrame& f = pool->frame(0);
   if (f.left.cols != c.width_px || f.left.rows != c.height_px || f.left.channels() != c.channels) {
     return fail(error, "camera: the frame pool's frames do not have the camera's size and channels");
   }
+  if (!cameras_open) return fail(error, "camera: start() before a successful open()");
   return true;
 }
 
-bool validateCameraSourceConfig(const CameraSourceConfig& c, std::string* error) {
+bool validateCameraSourceConfig(const CameraSourceConfig& c, std::string* error, PixelFormat* format_out) {
   if (c.driver != "aravis" && c.driver != "v4l2") {
     return fail(error, "camera.driver is '" + c.driver + "'; a camera source needs aravis or v4l2");
   }
@@ -61,6 +62,7 @@ bool validateCameraSourceConfig(const CameraSourceConfig& c, std::string* error)
     return fail(error, "camera.stale_after_s must be longer than the frame period");
   }
   if (c.stream_buffers < 4) return fail(error, "camera.stream_buffers must be at least 4");
+  if (format_out != nullptr) *format_out = format;
   return true;
 }
 

@@ -6,6 +6,7 @@
 #include "drivers/buffers/spsc_ring.h"
 #include "drivers/camera/camera_config.h"
 #include "drivers/camera/camera_status.h"
+#include "drivers/camera/raw_image.h"
 
 namespace deepnav {
 
@@ -29,11 +30,12 @@ class CameraSource {
 std::unique_ptr<CameraSource> makeCameraSource(const CameraSourceConfig& config, std::string* error);
 
 // The check of every driver's start(): a pool whose frames have the configured size and channel count,
-// and a ring.
-bool checkFramePool(const CameraSourceConfig& config, const FramePool* pool, const SpscRing<int>* frames,
-                    std::string* error);
+// a ring, and both cameras opened (cameras_open: the driver's own open() succeeded).
+bool checkStart(const CameraSourceConfig& config, const FramePool* pool, const SpscRing<int>* frames,
+                bool cameras_open, std::string* error);
 
 // Checks what every driver needs from the config (formats, tolerance against the frame period...).
-bool validateCameraSourceConfig(const CameraSourceConfig& config, std::string* error);
+// When the config is valid and format is given, *format receives the parsed camera.pixel_format.
+bool validateCameraSourceConfig(const CameraSourceConfig& config, std::string* error, PixelFormat* format = nullptr);
 
 }  // namespace deepnav
