@@ -1,12 +1,9 @@
 // `deepnav calibrate` as a user runs it: rendered ChArUco pairs written as PNGs, a target.yaml, the
 // command line; the calibration file it writes holds the simulated rig and rectifies it.
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
-#include <unistd.h>
 
 #include <gtest/gtest.h>
 #include <opencv2/imgcodecs.hpp>
@@ -15,7 +12,7 @@
 #include "board/config/camera_rectification.h"
 #include "board/config/stereo_calibration_file.h"
 #include "tools/sim/calib/charuco_images.h"
-#include "tests/support/source_paths.h"
+#include "tests/support/cli_run.h"
 #include "tests/support/temp_path.h"
 
 namespace deepnav {
@@ -26,24 +23,8 @@ namespace fs = std::filesystem;
 const char* kTarget =
     "squares_x: 8\nsquares_y: 6\nsquare_m: 0.06\nmarker_m: 0.045\ndictionary: DICT_5X5_100\nmin_corners: 12\n";
 
-struct CliRun {
-  int exit_code = -1;
-  std::string out;  // stdout and stderr
-};
-
-CliRun runDeepnav(const std::string& args) {
-  const std::string log = deepnav::testing::tempPath("calibrate_cli_output.txt");
-  const std::string cmd = deepnav::testing::binDir() + "/deepnav " + args + " > " + log + " 2>&1";
-  CliRun r;
-  const int status = std::system(cmd.c_str());
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream in(log);
-  std::stringstream s;
-  s << in.rdbuf();
-  r.out = s.str();
-  fs::remove(log);
-  return r;
-}
+using deepnav::testing::CliRun;
+using deepnav::testing::runDeepnav;
 
 class CalibrateCli : public ::testing::Test {
  protected:

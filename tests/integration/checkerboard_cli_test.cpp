@@ -2,10 +2,7 @@
 // (issue 19 items 3-4). The real set is OpenCV's stereo sample as Debian's opencv-doc ships it
 // (/usr/share/doc/opencv-doc/examples/data/left01..14.jpg, right01..14.jpg; skipped when absent); its
 // square size is not published: 25 mm is assumed, which scales T and nothing else.
-#include <unistd.h>
-
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -15,7 +12,7 @@
 #include "board/config/board_config.h"
 #include "board/config/camera_rectification.h"
 #include "board/config/stereo_calibration_file.h"
-#include "tests/support/source_paths.h"
+#include "tests/support/cli_run.h"
 #include "tests/support/temp_path.h"
 
 namespace deepnav {
@@ -25,24 +22,8 @@ namespace fs = std::filesystem;
 
 const fs::path kOpencvDocData = "/usr/share/doc/opencv-doc/examples/data";
 
-struct CliRun {
-  int exit_code = -1;
-  std::string out;  // stdout and stderr
-};
-
-CliRun runDeepnav(const std::string& args) {
-  const std::string log = deepnav::testing::tempPath("checkerboard_cli_output.txt");
-  const std::string cmd = deepnav::testing::binDir() + "/deepnav " + args + " > " + log + " 2>&1";
-  CliRun r;
-  const int status = std::system(cmd.c_str());
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream in(log);
-  std::stringstream s;
-  s << in.rdbuf();
-  r.out = s.str();
-  fs::remove(log);
-  return r;
-}
+using deepnav::testing::CliRun;
+using deepnav::testing::runDeepnav;
 
 fs::path scratch(const std::string& name) {
   const fs::path dir = fs::path(deepnav::testing::tempPath("checkerboard_cli"));

@@ -21,6 +21,7 @@
 #include "tests/support/temp_path.h"
 #include "tests/support/test_dive.h"
 #include "tests/support/source_paths.h"
+#include "tests/support/test_replay.h"
 
 namespace deepnav {
 namespace {
@@ -154,11 +155,7 @@ ReplaySummary replay(const std::string& input, const std::string& out, const std
   o.out_dir = out;
   o.topics_path = topics;
   o.board_path = board;
-  o.progress = false;
-  ReplaySummary s;
-  std::string error;
-  EXPECT_TRUE(runBenchReplay(o, &s, &error)) << error;
-  return s;
+  return testing::replayOrFail(o);
 }
 
 // The converted run's estimate against the original's, tick by tick (its clock is 1000 s later).

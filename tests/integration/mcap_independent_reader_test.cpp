@@ -21,6 +21,7 @@
 #include "drivers/cdr/ros_msg_codec.h"
 #include "drivers/mcap/reader.h"
 #include "drivers/mcap/writer.h"
+#include "tests/support/mcap_test_util.h"
 #include "tests/support/source_paths.h"
 #include "tests/support/temp_path.h"
 
@@ -203,13 +204,7 @@ TEST_P(McapIndependentReader, FoxgloveReaderRejectsACutOffFile) {
   std::filesystem::remove(path);
 }
 
-INSTANTIATE_TEST_SUITE_P(McapEveryCompression, McapIndependentReader,
-                         ::testing::Values(Compression::kNone, Compression::kZstd,
-                                           Compression::kLz4),
-                         [](const ::testing::TestParamInfo<Compression>& info) {
-                           const std::string_view name = compressionName(info.param);
-                           return name.empty() ? std::string("none") : std::string(name);
-                         });
+INSTANTIATE_TEST_SUITE_P(McapEveryCompression, McapIndependentReader, everyCompression(), compressionTestName);
 
 TEST(McapWriterSteadyState, WriteDoesNotAllocateAfterWarmUp) {
   for (const Compression compression :

@@ -12,6 +12,7 @@
 #include "board/replay/realtime_replay.h"
 #include "tests/support/test_dive.h"
 #include "tests/support/source_paths.h"
+#include "tests/support/test_replay.h"
 
 namespace deepnav {
 namespace {
@@ -21,11 +22,7 @@ ReplaySummary replay(const std::string& input, const std::string& out, const std
   o.input_path = input;
   o.out_dir = out;
   o.board_path = board;
-  o.progress = false;
-  ReplaySummary s;
-  std::string error;
-  EXPECT_TRUE(runBenchReplay(o, &s, &error)) << error;
-  return s;
+  return testing::replayOrFail(o);
 }
 
 class ReplayTest : public ::testing::Test {

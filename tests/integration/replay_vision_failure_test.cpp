@@ -15,6 +15,7 @@
 #include "board/replay/bench_replay.h"
 #include "board/replay/realtime_replay.h"
 #include "tests/support/test_dive.h"
+#include "tests/support/test_replay.h"
 
 namespace deepnav {
 namespace {
@@ -35,12 +36,8 @@ ReplaySummary replay(const std::string& dive, const std::string& out, void (*pro
   ReplayOptions o;
   o.input_path = dive;
   o.out_dir = out;
-  o.progress = false;
   o.vision_stage_probe = probe;
-  ReplaySummary s;
-  std::string error;
-  EXPECT_TRUE(runBenchReplay(o, &s, &error)) << error;
-  return s;
+  return testing::replayOrFail(o);
 }
 
 TEST(ReplayVisionFailure, AThrowingStageCostsItsPairsNotTheReplay) {

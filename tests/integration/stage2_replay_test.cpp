@@ -7,6 +7,7 @@
 
 #include "board/replay/bench_replay.h"
 #include "tests/support/test_dive.h"
+#include "tests/support/test_replay.h"
 
 namespace deepnav {
 namespace {
@@ -28,15 +29,11 @@ ReplaySummary replay(const std::string& out, const std::vector<std::string>& ext
   ReplayOptions o;
   o.input_path = quickDive();
   o.out_dir = testing::tempPath("stage2_" + out);
-  o.progress = false;
   o.overrides = kQuickStages;
   o.overrides.insert(o.overrides.end(), extra.begin(), extra.end());
   o.workspace_in = ws_in;
   o.workspace_out = ws_out;
-  ReplaySummary s;
-  std::string error;
-  EXPECT_TRUE(runBenchReplay(o, &s, &error)) << error;
-  return s;
+  return testing::replayOrFail(o);
 }
 
 TEST(Stage2Replay, AdaptiveVoIsFusedAndTheWorkspaceRestartsInStage2) {

@@ -26,6 +26,19 @@ class Ros1BagWriter {
  public:
   enum class Compression { kNone, kBz2, kLz4 };
 
+  // The bag header's name of a compression ("none", "bz2", "lz4").
+  static std::string compressionName(Compression c) {
+    switch (c) {
+      case Compression::kBz2:
+        return "bz2";
+      case Compression::kLz4:
+        return "lz4";
+      case Compression::kNone:
+        break;
+    }
+    return "none";
+  }
+
   bool open(const std::string& path, Compression compression = Compression::kNone,
             size_t chunk_size = 768 * 1024) {
     path_ = path;
@@ -181,21 +194,10 @@ class Ros1BagWriter {
     out_.seekp(std::streamoff(pos_));
   }
 
-  std::string_view compressionName() const {
-    switch (compression_) {
-      case Compression::kBz2:
-        return "bz2";
-      case Compression::kLz4:
-        return "lz4";
-      case Compression::kNone:
-        break;
-    }
-    return "none";
-  }
   std::vector<uint8_t> chunkHeader(uint32_t size) const {
     std::vector<uint8_t> header;
     field(&header, "op", {uint8_t(0x05)});
-    field(&header, "compression", text(compressionName()));
+    field(&header, "compression", text(compressionName(compression_)));
     field(&header, "size", le(size, 4));
     return header;
   }

@@ -1,6 +1,7 @@
 #pragma once
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <cmath>
 #include <cstdint>
 #include <opencv2/core.hpp>
 #include <vector>
@@ -38,6 +39,28 @@ struct SyntheticScene {
   void addBox(const Eigen::Vector3d& base_m, const Eigen::Vector3d& size_m, double yaw_rad,
               std::uint32_t seed);
 };
+
+// A pinhole stereo geometry with square pixels of focal f_px, the principal point at the centre of a
+// width x height image.
+inline StereoGeometry centredStereoGeometry(double f_px, int width_px, int height_px, double baseline_m) {
+  StereoGeometry g;
+  g.fx_px = g.fy_px = f_px;
+  g.cx_px = 0.5 * (width_px - 1);
+  g.cy_px = 0.5 * (height_px - 1);
+  g.baseline_m = baseline_m;
+  return g;
+}
+
+// T_world_cam of a camera at position_m (world z up) looking along world +y, pitched down by pitch_down_rad;
+// optical axes x right, y down, z forward.
+inline Eigen::Isometry3d cameraPitchedDown(double pitch_down_rad, const Eigen::Vector3d& position_m) {
+  const Eigen::Vector3d z(0.0, std::cos(pitch_down_rad), -std::sin(pitch_down_rad));
+  const Eigen::Vector3d x = Eigen::Vector3d::UnitX();
+  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+  T.linear() << x, z.cross(x), z;
+  T.translation() = position_m;
+  return T;
+}
 
 // What a pinhole camera at T_world_cam sees: per pixel, the disparity (px; kInvalidDisparity
 // where the ray hits nothing), the index of the surface (rectangles first, then spheres; -1 none),

@@ -12,6 +12,8 @@
 #include "drivers/mcap/crc32.h"
 #include "drivers/mcap/reader.h"
 #include "drivers/mcap/writer.h"
+#include "tests/support/temp_path.h"
+#include "tests/support/mcap_test_util.h"
 
 namespace deepnav::mcap {
 namespace {
@@ -32,12 +34,7 @@ struct Received {
   std::vector<uint8_t> data;
 };
 
-std::string tempPath(const std::string& name) {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  std::string test = std::string(info->test_suite_name()) + "_" + info->name();
-  std::replace(test.begin(), test.end(), '/', '_');
-  return (std::filesystem::temp_directory_path() / ("deepnav_" + test + "_" + name)).string();
-}
+using deepnav::testing::tempPath;
 
 // Payloads that compress somewhat, like sensor data: a counter pattern with noise.
 std::vector<uint8_t> payload(uint32_t i, size_t size) {
@@ -186,13 +183,7 @@ TEST_P(McapRoundTrip, MessagesSchemasChannelsAndStatisticsSurvive) {
   std::filesystem::remove(path);
 }
 
-INSTANTIATE_TEST_SUITE_P(McapEveryCompression, McapRoundTrip,
-                         ::testing::Values(Compression::kNone, Compression::kZstd,
-                                           Compression::kLz4),
-                         [](const ::testing::TestParamInfo<Compression>& info) {
-                           const std::string_view name = compressionName(info.param);
-                           return name.empty() ? std::string("none") : std::string(name);
-                         });
+INSTANTIATE_TEST_SUITE_P(McapEveryCompression, McapRoundTrip, everyCompression(), compressionTestName);
 
 TEST(McapWriter, ClosesAChunkBeforeItSpansMoreThanTheMaxDuration) {
   // GIVEN a chunk size that is never reached and a 100 ms duration limit

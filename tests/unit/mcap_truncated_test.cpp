@@ -13,6 +13,8 @@
 
 #include "drivers/mcap/reader.h"
 #include "drivers/mcap/writer.h"
+#include "tests/support/temp_path.h"
+#include "tests/support/mcap_test_util.h"
 
 namespace deepnav::mcap {
 namespace {
@@ -25,12 +27,7 @@ struct Sent {
   size_t chunk;  // index of the chunk the writer put it in
 };
 
-std::string tempPath(const std::string& name) {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  std::string test = std::string(info->test_suite_name()) + "_" + info->name();
-  std::replace(test.begin(), test.end(), '/', '_');
-  return (std::filesystem::temp_directory_path() / ("deepnav_" + test + "_" + name)).string();
-}
+using deepnav::testing::tempPath;
 
 std::vector<uint8_t> readFile(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -206,13 +203,7 @@ TEST_P(McapTruncated, CorruptBytesGiveAnErrorOrWarningNeverACrashOrWrongData) {
   std::filesystem::remove(bad_path);
 }
 
-INSTANTIATE_TEST_SUITE_P(McapEveryCompression, McapTruncated,
-                         ::testing::Values(Compression::kNone, Compression::kZstd,
-                                           Compression::kLz4),
-                         [](const ::testing::TestParamInfo<Compression>& info) {
-                           const std::string_view name = compressionName(info.param);
-                           return name.empty() ? std::string("none") : std::string(name);
-                         });
+INSTANTIATE_TEST_SUITE_P(McapEveryCompression, McapTruncated, everyCompression(), compressionTestName);
 
 TEST(McapCorruptChunk, ABadCrcSkipsOnlyThatChunkAndCountsIt) {
   // GIVEN an uncompressed recording whose second chunk has one payload byte changed

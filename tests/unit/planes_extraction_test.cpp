@@ -15,14 +15,7 @@ constexpr int kWidth = 320;
 constexpr int kHeight = 240;
 constexpr double kDeg = M_PI / 180.0;
 
-StereoGeometry geometry() {
-  StereoGeometry g;
-  g.fx_px = g.fy_px = 400.0;
-  g.cx_px = 159.5;
-  g.cy_px = 119.5;
-  g.baseline_m = 0.15;
-  return g;
-}
+StereoGeometry geometry() { return centredStereoGeometry(400.0, kWidth, kHeight, 0.15); }
 
 // World z up. A floor and a box (yawed 40 deg, so two side faces and the top are visible); the
 // camera 1.6 m above the floor looking along world y, pitched 30 deg down.
@@ -32,17 +25,6 @@ SyntheticScene boxOnFloor() {
       {Eigen::Vector3d(0, 3, 0), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), 4.0, 4.0, 3});
   scene.addBox(Eigen::Vector3d(0.0, 2.4, 0.0), Eigen::Vector3d(0.7, 0.7, 0.5), 40.0 * kDeg, 11);
   return scene;
-}
-
-Eigen::Isometry3d cameraPose(double pitch_down_rad, const Eigen::Vector3d& position) {
-  // optical axes in world: x right, y down, z forward
-  const Eigen::Vector3d z(0.0, std::cos(pitch_down_rad), -std::sin(pitch_down_rad));
-  const Eigen::Vector3d x = Eigen::Vector3d::UnitX();
-  const Eigen::Vector3d y = z.cross(x);
-  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-  T.linear() << x, y, z;
-  T.translation() = position;
-  return T;
 }
 
 // A rectangle's plane in the camera frame, oriented to the camera: (n, d) with n . p = d < 0.
@@ -69,7 +51,7 @@ void addDisparityNoise(double sigma_px, cv::Mat* disparity) {
 
 struct Fixture {
   SyntheticScene scene = boxOnFloor();
-  Eigen::Isometry3d T_world_cam = cameraPose(30.0 * kDeg, Eigen::Vector3d(0.0, 0.0, 1.6));
+  Eigen::Isometry3d T_world_cam = cameraPitchedDown(30.0 * kDeg, Eigen::Vector3d(0.0, 0.0, 1.6));
   SyntheticView view;
   OrganizedCloud cloud;
   PlaneExtractor extractor;

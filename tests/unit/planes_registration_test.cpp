@@ -18,23 +18,7 @@ constexpr int kWidth = 320;
 constexpr int kHeight = 240;
 constexpr double kDeg = M_PI / 180.0;
 
-StereoGeometry geometry() {
-  StereoGeometry g;
-  g.fx_px = g.fy_px = 400.0;
-  g.cx_px = 159.5;
-  g.cy_px = 119.5;
-  g.baseline_m = 0.15;
-  return g;
-}
-
-Eigen::Isometry3d cameraPose(double pitch_down_rad, const Eigen::Vector3d& position) {
-  const Eigen::Vector3d z(0.0, std::cos(pitch_down_rad), -std::sin(pitch_down_rad));
-  const Eigen::Vector3d x = Eigen::Vector3d::UnitX();
-  Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
-  T.linear() << x, z.cross(x), z;
-  T.translation() = position;
-  return T;
-}
+StereoGeometry geometry() { return centredStereoGeometry(400.0, kWidth, kHeight, 0.15); }
 
 // Floor + a yawed box (top parallel to the floor, two sides: three non-parallel directions).
 SyntheticScene boxOnFloor() {
@@ -132,7 +116,7 @@ TEST(PlaneRegistration, RecoversMotionFromTwoNoisyViewsWithUnknownOrderAndSpurio
   // GIVEN the planes of two noisy (0.15 px) views of a box on the floor, 4 deg and 14 cm apart,
   // in shuffled order, with spurious planes of plausible size added to both sets
   const SyntheticScene scene = boxOnFloor();
-  const Eigen::Isometry3d T_world_a = cameraPose(30.0 * kDeg, Eigen::Vector3d(0.0, 0.0, 1.6));
+  const Eigen::Isometry3d T_world_a = cameraPitchedDown(30.0 * kDeg, Eigen::Vector3d(0.0, 0.0, 1.6));
   const Eigen::Isometry3d T_a_b = motion();
   PlaneSet extracted_a, extracted_b;
   extractPlanes(scene, T_world_a, 0.15, 1, &extracted_a);

@@ -19,13 +19,10 @@ namespace {
 using testsupport::encodeRos1;
 using testsupport::Ros1BagWriter;
 using Compression = Ros1BagWriter::Compression;
+constexpr auto compressionName = &Ros1BagWriter::compressionName;
 using namespace testing_util;
 
 constexpr uint64_t kChunksStart = 13 + 4096;  // magic + the padded bag header record
-
-std::string name(Compression c) {
-  return c == Compression::kBz2 ? "bz2" : c == Compression::kLz4 ? "lz4" : "none";
-}
 
 struct Sent {
   std::string topic;
@@ -67,7 +64,7 @@ void expectOpenFails(const std::string& path, const std::vector<std::string>& pa
 class RosbagDamaged : public ::testing::TestWithParam<Compression> {};
 
 TEST_P(RosbagDamaged, BagNotClosedIsReadByScanningItsChunks) {
-  const std::string path = tempBagPath(name(GetParam()) + ".bag");
+  const std::string path = deepnav::testing::tempPath(compressionName(GetParam()) + ".bag");
   Ros1BagWriter writer;
   ASSERT_TRUE(writer.open(path, GetParam(), 700));
   const std::vector<Sent> sent = writeBag(&writer);
@@ -86,7 +83,7 @@ TEST_P(RosbagDamaged, BagNotClosedIsReadByScanningItsChunks) {
 }
 
 TEST_P(RosbagDamaged, UnfinishedLastChunk) {
-  const std::string path = tempBagPath(name(GetParam()) + ".bag");
+  const std::string path = deepnav::testing::tempPath(compressionName(GetParam()) + ".bag");
   Ros1BagWriter writer;
   ASSERT_TRUE(writer.open(path, GetParam(), 700));
   const std::vector<Sent> sent = writeBag(&writer, 25);
@@ -118,7 +115,7 @@ TEST_P(RosbagDamaged, UnfinishedLastChunk) {
 // the cut come out, in order, intact; if any message is missing forEach says so with the file and
 // byte; a cut in the index section loses nothing.
 TEST_P(RosbagDamaged, CutAtManyOffsets) {
-  const std::string full = tempBagPath(name(GetParam()) + "_full.bag");
+  const std::string full = deepnav::testing::tempPath(compressionName(GetParam()) + "_full.bag");
   Ros1BagWriter writer;
   ASSERT_TRUE(writer.open(full, GetParam(), 700));
   const std::vector<Sent> sent = writeBag(&writer);
@@ -132,7 +129,7 @@ TEST_P(RosbagDamaged, CutAtManyOffsets) {
   for (uint64_t p : chunks) cuts.insert(cuts.end(), {p - 1, p, p + 1, p + 30});
   cuts.insert(cuts.end(), {kChunksStart - 1, kChunksStart, writer.indexPos(),
                            writer.indexPos() + 1, bytes.size() - 1});
-  const std::string path = tempBagPath(name(GetParam()) + "_cut.bag");
+  const std::string path = deepnav::testing::tempPath(compressionName(GetParam()) + "_cut.bag");
   for (uint64_t cut : cuts) {
     SCOPED_TRACE("cut at byte " + std::to_string(cut));
     writeBytes(path, bytes.data(), size_t(cut));
@@ -178,13 +175,13 @@ TEST_P(RosbagDamaged, CutAtManyOffsets) {
 INSTANTIATE_TEST_SUITE_P(RosbagCompressions, RosbagDamaged,
                          ::testing::Values(Compression::kNone, Compression::kBz2,
                                            Compression::kLz4),
-                         [](const auto& info) { return name(info.param); });
+                         [](const auto& info) { return compressionName(info.param); });
 
 class RosbagMalformed : public ::testing::Test {
  protected:
   // A closed, valid bag (bz2) and its bytes, to be damaged.
   void SetUp() override {
-    path_ = tempBagPath("bag.bag");
+    path_ = deepnav::testing::tempPath("bag.bag");
     ASSERT_TRUE(writer_.open(path_, Compression::kBz2, 700));
     writeBag(&writer_);
     ASSERT_TRUE(writer_.close());
@@ -371,7 +368,7 @@ using namespace testing_util;
 class RosbagFlipped : public ::testing::TestWithParam<Ros1BagWriter::Compression> {};
 
 TEST_P(RosbagFlipped, NoCrashAndErrorsNameTheFile) {
-  const std::string path = tempBagPath("flipped.bag");
+  const std::string path = deepnav::testing::tempPath("flipped.bag");
   Ros1BagWriter writer;
   ASSERT_TRUE(writer.open(path, GetParam(), 700));
   for (int i = 0; i < 20; ++i) writer.write("/imu", sampleImu(i), 1000 * i);
@@ -397,7 +394,7 @@ INSTANTIATE_TEST_SUITE_P(RosbagCompressions, RosbagFlipped,
                          ::testing::Values(Ros1BagWriter::Compression::kNone,
                                            Ros1BagWriter::Compression::kBz2,
                                            Ros1BagWriter::Compression::kLz4),
-                         [](const auto& info) { return name(info.param); });
+                         [](const auto& info) { return compressionName(info.param); });
 
 }  // namespace
 }  // namespace deepnav::rosbag

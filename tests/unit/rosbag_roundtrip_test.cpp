@@ -20,19 +20,8 @@ using testsupport::encodeRos1;
 using testsupport::Ros1BagWriter;
 using testsupport::Ros1Type;
 using Compression = Ros1BagWriter::Compression;
+constexpr auto compressionName = &Ros1BagWriter::compressionName;
 using namespace testing_util;
-
-std::string name(Compression c) {
-  switch (c) {
-    case Compression::kBz2:
-      return "bz2";
-    case Compression::kLz4:
-      return "lz4";
-    case Compression::kNone:
-      break;
-  }
-  return "none";
-}
 
 // Decodes `d` as Msg and checks it against `sent`: equal structs serialize to equal bytes, so the
 // sent message re-encoded must equal the decoded one re-encoded (seq is not kept by the structs).
@@ -50,7 +39,7 @@ void expectDecodesTo(const Delivered& d, const Msg& sent) {
 class RosbagRoundTrip : public ::testing::TestWithParam<Compression> {};
 
 TEST_P(RosbagRoundTrip, EveryMessageTypeDecodesToWhatWasWritten) {
-  const std::string path = tempBagPath(name(GetParam()) + ".bag");
+  const std::string path = deepnav::testing::tempPath(compressionName(GetParam()) + ".bag");
   Ros1BagWriter writer;
   ASSERT_TRUE(writer.open(path, GetParam(), 600));  // small chunks: several per bag
   const int64_t t0 = 1700000000000000000LL;
@@ -103,7 +92,7 @@ TEST_P(RosbagRoundTrip, EveryMessageTypeDecodesToWhatWasWritten) {
 // with the same log times as the first (ties), some messages written late: the reader must give
 // the stable sort by log time of the write order, i.e. ties in file order.
 TEST_P(RosbagRoundTrip, MessagesComeInLogTimeOrderAcrossChunksAndConnections) {
-  const std::string path = tempBagPath(name(GetParam()) + ".bag");
+  const std::string path = deepnav::testing::tempPath(compressionName(GetParam()) + ".bag");
   Ros1BagWriter writer;
   ASSERT_TRUE(writer.open(path, GetParam(), 1500));
   struct Sent {
@@ -143,7 +132,7 @@ TEST_P(RosbagRoundTrip, MessagesComeInLogTimeOrderAcrossChunksAndConnections) {
 }
 
 TEST_P(RosbagRoundTrip, CallbackReturningFalseStops) {
-  const std::string path = tempBagPath(name(GetParam()) + ".bag");
+  const std::string path = deepnav::testing::tempPath(compressionName(GetParam()) + ".bag");
   Ros1BagWriter writer;
   ASSERT_TRUE(writer.open(path, GetParam(), 500));
   for (int i = 0; i < 30; ++i) writer.write("/depth", sampleFluidPressure(i), 1000 + i);
@@ -159,10 +148,10 @@ TEST_P(RosbagRoundTrip, CallbackReturningFalseStops) {
 INSTANTIATE_TEST_SUITE_P(RosbagCompressions, RosbagRoundTrip,
                          ::testing::Values(Compression::kNone, Compression::kBz2,
                                            Compression::kLz4),
-                         [](const auto& info) { return name(info.param); });
+                         [](const auto& info) { return compressionName(info.param); });
 
 TEST(RosbagRoundTripEmpty, ClosedBagWithoutMessagesHasNoTopics) {
-  const std::string path = tempBagPath("empty.bag");
+  const std::string path = deepnav::testing::tempPath("empty.bag");
   Ros1BagWriter writer;
   ASSERT_TRUE(writer.open(path));
   ASSERT_TRUE(writer.close());
@@ -178,7 +167,7 @@ TEST(RosbagRoundTripEmpty, ClosedBagWithoutMessagesHasNoTopics) {
 // A message of a standard type (md5sum right) but too short for it: the container delivers its
 // bytes, the decoder refuses them.
 TEST(RosbagRoundTripShort, MessageTooShortForItsTypeIsDeliveredButDoesNotDecode) {
-  const std::string path = tempBagPath("short.bag");
+  const std::string path = deepnav::testing::tempPath("short.bag");
   Ros1BagWriter writer;
   ASSERT_TRUE(writer.open(path, Compression::kLz4));
   std::vector<uint8_t> imu = encodeRos1(sampleImu(0));

@@ -1,6 +1,5 @@
 #pragma once
-// Shared by the rosbag_*_test.cpp files: sample messages of every type, temp paths, reading a bag
-// back whole.
+// Shared by the rosbag_*_test.cpp files: sample messages of every type, reading a bag back whole.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -12,15 +11,9 @@
 
 #include "drivers/cdr/ros_msgs.h"
 #include "drivers/rosbag/bag_reader.h"
+#include "tests/support/temp_path.h"
 
 namespace deepnav::rosbag::testing_util {
-
-inline std::string tempBagPath(const std::string& name) {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  std::string test = std::string(info->test_suite_name()) + "_" + info->name();
-  std::replace(test.begin(), test.end(), '/', '_');
-  return (std::filesystem::temp_directory_path() / ("deepnav_" + test + "_" + name)).string();
-}
 
 inline std::vector<uint8_t> readBytes(const std::string& path) {
   std::ifstream in(path, std::ios::binary);

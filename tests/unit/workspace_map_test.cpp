@@ -18,14 +18,7 @@ constexpr int kHeight = 240;
 constexpr double kWallY = 3.0;
 constexpr double kBoxFrontY = 1.8;
 
-StereoGeometry geometry() {
-  StereoGeometry g;
-  g.fx_px = g.fy_px = 300.0;
-  g.cx_px = 159.5;
-  g.cy_px = 119.5;
-  g.baseline_m = 0.12;
-  return g;
-}
+StereoGeometry geometry() { return centredStereoGeometry(300.0, kWidth, kHeight, 0.12); }
 
 // World z up. A wall 3 m ahead and a box whose front face is 1.8 m ahead; the sides of the box
 // face +-x and are never seen from the cameras below (|x| < 0.3 m). Index 0: wall, 1..6: box
