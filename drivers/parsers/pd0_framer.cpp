@@ -51,30 +51,6 @@ Pd0Framer::Check Pd0Framer::checkAt(size_t at, size_t* frame_bytes, const char**
   return Check::kValid;
 }
 
-size_t Pd0Framer::laterValidFrame() {
-  return deepnav::laterValidFrame(
-      core_.buffer.data(), core_.buffer.size(), 0x7F, &core_.probe, [this](size_t at) { return headerAt(at); },
-      [this](size_t at, size_t* bytes) {
-        const char* why = "";
-        return checkAt(at, bytes, &why);
-      });
-}
-
-// A checksum-valid frame may still be a false header whose checksum happened to hold (1 in 256 for an
-// 8-bit sum, e.g. a frame cut short whose length then runs into the next one): it is refused when an
-// ensemble starting inside it is valid, runs past its end and is followed by a header (or by the end
-// of the input). Out of lock (after skipped bytes) the answer waits while such a later ensemble is
-// incomplete (at most one maximal frame); in lock the frame is taken unless the refusal is certain,
-// so the steady state of a live line never waits (a file, waitForCertainty(), always waits). The scan is a memchr over the frame: a few percent of its cost.
-Pd0Framer::Overrun Pd0Framer::overrunByLaterFrame(size_t frame_bytes) const {
-  return deepnav::overrunByLaterFrame(
-      core_.buffer.data(), core_.buffer.size(), frame_bytes, 0x7F, core_.end_of_input, [this](size_t at) { return headerAt(at); },
-      [this](size_t at, size_t* bytes) {
-        const char* why = "";
-        return checkAt(at, bytes, &why);
-      });
-}
-
 FrameStatus Pd0Framer::next(RawFrame* frame, FrameError* error) {
   core_.flushPending();
   const uint8_t* d = core_.buffer.data();
@@ -92,25 +68,15 @@ FrameStatus Pd0Framer::next(RawFrame* frame, FrameError* error) {
   switch (checkAt(0, &bytes, &why, !core_.in_lock || core_.wait_for_certainty)) {
     case Check::kBad: return core_.skip(1, why, error);
     case Check::kValid:
-      {
-        // In lock on a live line the 16-bit sum is trusted (1 in 65536 cut frames pass): no scan.
-        const bool scan = !core_.in_lock || core_.wait_for_certainty;
-        const Overrun o = scan ? overrunByLaterFrame(bytes) : Overrun::kNo;
-        if (o == Overrun::kYes) return core_.skip(1, "PD0 ensemble overrun by a later valid ensemble", error);
-        if (o == Overrun::kNotYetKnown && (!core_.in_lock || core_.wait_for_certainty) && !core_.buffer.full()) {
-          return FrameStatus::kNeedMore;
-        }
-      }
-      return core_.take(bytes, frame);
+      // In lock on a live line the 16-bit sum is trusted (1 in 65536 cut frames pass): no scan.
+      return takeValid(bytes, !core_.in_lock || core_.wait_for_certainty,
+                       "PD0 ensemble overrun by a later valid ensemble", frame, error);
     case Check::kIncomplete: break;
   }
   if (size == 0) return FrameStatus::kNeedMore;
   if (core_.end_of_input) return core_.skip(size < 2 ? size : 1, "PD0 ensemble cut short by the end of the input", error);
   if (core_.buffer.full()) return core_.skip(1, "PD0 ensemble larger than the buffer", error);
-  // In lock, a frame no longer than the last one cannot hold a later one yet: no probe (steady state).
-  if (core_.in_lock && size <= core_.last_frame_bytes) return FrameStatus::kNeedMore;
-  if (const size_t at = laterValidFrame(); at > 0) return core_.skip(at, "PD0 header whose length runs over a later valid ensemble", error);
-  return FrameStatus::kNeedMore;
+  return waitOrSkipFalseHeader("PD0 header whose length runs over a later valid ensemble", error);
 }
 
 }  // namespace deepnav

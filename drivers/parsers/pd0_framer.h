@@ -2,9 +2,8 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "drivers/parsers/binary_framer_core.h"
+#include "drivers/parsers/binary_framer.h"
 #include "drivers/parsers/frame_result.h"
-#include "drivers/parsers/later_frame_scan.h"
 
 namespace deepnav {
 
@@ -19,29 +18,20 @@ namespace deepnav {
 // to later ensembles). After endOfInput() an incomplete ensemble is dropped one byte at a time so the
 // ensembles inside it are found. After skipped bytes, a checksum-valid ensemble is refused when a
 // valid ensemble starting inside it runs past its end and is followed by a header.
-class Pd0Framer {
+class Pd0Framer : public BinaryFramer<Pd0Framer, 0x7F> {
  public:
   static constexpr size_t kMinEnsembleBytes = 6;
   // max_ensemble_bytes bounds the length field (and sizes the buffer).
   bool init(size_t max_ensemble_bytes);
-  size_t push(const uint8_t* data, size_t n) { return core_.push(data, n); }
-  // No byte will follow (end of a file): what is held is framed without waiting.
-  void endOfInput() { core_.end_of_input = true; }
-  // The bytes come from a file, not a live line: waiting for later bytes costs no latency, so a
-  // frame in lock whose refusal depends on bytes not yet held waits for them too.
-  void waitForCertainty() { core_.wait_for_certainty = true; }
   FrameStatus next(RawFrame* frame, FrameError* error);
 
  private:
+  friend class BinaryFramer<Pd0Framer, 0x7F>;
   using Check = FrameCheck;
   // The candidate ensemble whose header starts `at` bytes into the buffer.
   Check checkAt(size_t at, size_t* frame_bytes, const char** reason, bool check_offsets = true) const;
   bool headerAt(size_t at) const;
-  size_t laterValidFrame();
-  using Overrun = FrameOverrun;
-  Overrun overrunByLaterFrame(size_t frame_bytes) const;
 
-  BinaryFramerCore core_;
   size_t max_bytes_ = 0;
 };
 

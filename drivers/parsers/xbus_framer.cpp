@@ -55,30 +55,6 @@ XbusFramer::Check XbusFramer::checkAt(size_t at, size_t* frame_bytes, const char
   return Check::kValid;
 }
 
-size_t XbusFramer::laterValidFrame() {
-  return deepnav::laterValidFrame(
-      core_.buffer.data(), core_.buffer.size(), kPreamble, &core_.probe, [this](size_t at) { return headerAt(at); },
-      [this](size_t at, size_t* bytes) {
-        const char* why = "";
-        return checkAt(at, bytes, &why);
-      });
-}
-
-// A checksum-valid frame may still be a false header whose checksum happened to hold (1 in 256 for an
-// 8-bit sum, e.g. a frame cut short whose length then runs into the next one): it is refused when a
-// message starting inside it is valid, runs past its end and is followed by a header (or by the end
-// of the input). Out of lock (after skipped bytes) the answer waits while such a later message is
-// incomplete (at most one maximal frame); in lock the frame is taken unless the refusal is certain,
-// so the steady state of a live line never waits (a file, waitForCertainty(), always waits). The scan is a memchr over the frame: a few percent of its cost.
-XbusFramer::Overrun XbusFramer::overrunByLaterFrame(size_t frame_bytes) const {
-  return deepnav::overrunByLaterFrame(
-      core_.buffer.data(), core_.buffer.size(), frame_bytes, kPreamble, core_.end_of_input, [this](size_t at) { return headerAt(at); },
-      [this](size_t at, size_t* bytes) {
-        const char* why = "";
-        return checkAt(at, bytes, &why);
-      });
-}
-
 FrameStatus XbusFramer::next(RawFrame* frame, FrameError* error) {
   core_.flushPending();
   const uint8_t* d = core_.buffer.data();
@@ -96,21 +72,13 @@ FrameStatus XbusFramer::next(RawFrame* frame, FrameError* error) {
         // In lock on a live line only a certain refusal counts, and it needs a later message ending past
         // this one and the next preamble: with fewer bytes held there is nothing to scan.
         const bool scan = !core_.in_lock || core_.wait_for_certainty || core_.end_of_input || size > bytes + 2;
-        const Overrun o = scan ? overrunByLaterFrame(bytes) : Overrun::kNo;
-        if (o == Overrun::kYes) return core_.skip(1, "Xbus message overrun by a later valid message", error);
-        if (o == Overrun::kNotYetKnown && (!core_.in_lock || core_.wait_for_certainty) && !core_.buffer.full()) {
-          return FrameStatus::kNeedMore;
-        }
+        return takeValid(bytes, scan, "Xbus message overrun by a later valid message", frame, error);
       }
-      return core_.take(bytes, frame);
     case Check::kIncomplete: break;
   }
   if (core_.end_of_input) return core_.skip(1, "Xbus message cut short by the end of the input", error);
   if (core_.buffer.full()) return core_.skip(1, "Xbus message larger than the buffer", error);
-  // In lock, a frame no longer than the last one cannot hold a later one yet: no probe (steady state).
-  if (core_.in_lock && size <= core_.last_frame_bytes) return FrameStatus::kNeedMore;
-  if (const size_t at = laterValidFrame(); at > 0) return core_.skip(at, "Xbus length runs over a later valid message", error);
-  return FrameStatus::kNeedMore;
+  return waitOrSkipFalseHeader("Xbus length runs over a later valid message", error);
 }
 
 bool splitXbusFrame(const uint8_t* d, size_t size, XbusMessage* m) {

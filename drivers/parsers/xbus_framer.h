@@ -2,9 +2,8 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "drivers/parsers/binary_framer_core.h"
+#include "drivers/parsers/binary_framer.h"
 #include "drivers/parsers/frame_result.h"
-#include "drivers/parsers/later_frame_scan.h"
 
 namespace deepnav {
 
@@ -17,27 +16,18 @@ namespace deepnav {
 // endOfInput() an incomplete message is dropped one byte at a time so the messages inside it are found.
 // After skipped bytes, a checksum-valid message (an 8-bit sum passes 1 in 256 false ones) is refused
 // when a valid message starting inside it runs past its end and is followed by a preamble and bus ID.
-class XbusFramer {
+class XbusFramer : public BinaryFramer<XbusFramer, 0xFA> {
  public:
   bool init(size_t max_payload_bytes);
-  size_t push(const uint8_t* data, size_t n) { return core_.push(data, n); }
-  // No byte will follow (end of a file): what is held is framed without waiting.
-  void endOfInput() { core_.end_of_input = true; }
-  // The bytes come from a file, not a live line: waiting for later bytes costs no latency, so a
-  // frame in lock whose refusal depends on bytes not yet held waits for them too.
-  void waitForCertainty() { core_.wait_for_certainty = true; }
   FrameStatus next(RawFrame* frame, FrameError* error);
 
  private:
+  friend class BinaryFramer<XbusFramer, 0xFA>;
   using Check = FrameCheck;
   // The candidate message whose preamble is `at` bytes into the buffer.
   Check checkAt(size_t at, size_t* frame_bytes, const char** reason) const;
   bool headerAt(size_t at) const;
-  size_t laterValidFrame();
-  using Overrun = FrameOverrun;
-  Overrun overrunByLaterFrame(size_t frame_bytes) const;
 
-  BinaryFramerCore core_;
   size_t max_payload_ = 0;
 };
 
