@@ -15,14 +15,9 @@ bool ByteCursor::skip(uint64_t n) {
 }
 
 bool ByteCursor::stringView(std::string_view* s) {
-  const size_t start = pos_;
-  uint32_t n = 0;
-  const uint8_t* p = nullptr;
-  if (!u32(&n) || !bytes(n, &p)) {
-    pos_ = start;
-    return false;
-  }
-  *s = std::string_view(reinterpret_cast<const char*>(p), n);
+  ByteCursor chars(nullptr, 0);  // a String is laid out as a block of chars
+  if (!block(&chars)) return false;
+  *s = std::string_view(reinterpret_cast<const char*>(chars.here()), chars.remaining());
   return true;
 }
 
