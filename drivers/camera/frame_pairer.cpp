@@ -9,6 +9,15 @@ void FramePairer::removeAt(int side, int index) {
   --n;
 }
 
+void FramePairer::keepWaiting(int side, const Frame& self, Result* r) {
+  auto& mine = pending_[static_cast<std::size_t>(side)];
+  if (count_[static_cast<std::size_t>(side)] >= max_pending_) {
+    r->dropped[static_cast<std::size_t>(r->dropped_count++)] = mine[0];
+    removeAt(side, 0);
+  }
+  mine[static_cast<std::size_t>(count_[static_cast<std::size_t>(side)]++)] = self;
+}
+
 void FramePairer::dropOlderThan(int side, TimeUs t_us, Result* r) {
   dropIf(side, r, [t_us](const Frame& f) { return f.t_us < t_us; });
 }
@@ -46,12 +55,7 @@ FramePairer::Result FramePairer::offerTicked(int side, const Frame& self) {
     r.dropped[static_cast<std::size_t>(r.dropped_count++)] = self;
     return r;
   }
-  auto& mine = pending_[static_cast<std::size_t>(side)];
-  if (count_[static_cast<std::size_t>(side)] >= max_pending_) {
-    r.dropped[static_cast<std::size_t>(r.dropped_count++)] = mine[0];
-    removeAt(side, 0);
-  }
-  mine[static_cast<std::size_t>(count_[static_cast<std::size_t>(side)]++)] = self;
+  keepWaiting(side, self, &r);
   return r;
 }
 
@@ -84,12 +88,7 @@ FramePairer::Result FramePairer::offer(int side, TimeUs t_us, int handle, std::i
   }
   // No partner yet. The other side's frames older than t - tolerance can never match this side again.
   dropOlderThan(other, t_us - tolerance_us_, &r);
-  auto& mine = pending_[static_cast<std::size_t>(side)];
-  if (count_[static_cast<std::size_t>(side)] >= max_pending_) {
-    r.dropped[static_cast<std::size_t>(r.dropped_count++)] = mine[0];
-    removeAt(side, 0);
-  }
-  mine[static_cast<std::size_t>(count_[static_cast<std::size_t>(side)]++)] = self;
+  keepWaiting(side, self, &r);
   return r;
 }
 

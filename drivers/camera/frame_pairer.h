@@ -48,6 +48,8 @@ class FramePairer {
 
  private:
   void removeAt(int side, int index);
+  // Keeps `self` waiting on its side; a full side first hands its oldest frame to r->dropped.
+  void keepWaiting(int side, const Frame& self, Result* r);
   void dropOlderThan(int side, TimeUs t_us, Result* r);
   void dropTicksBelow(int side, std::int64_t tick, Result* r);
   // Moves every waiting frame of one side that `drop` selects into r->dropped, keeping the others' order.
