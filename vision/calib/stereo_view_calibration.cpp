@@ -16,23 +16,33 @@ std::string format(const char* fmt, double a, double b = 0.0) {
   return buffer;
 }
 
-// Mean distance between the corners two views share, or a negative value when they share less than
-// 80 % of the smaller view (different parts of the board: not a duplicate).
-double sharedCornerMotion(const TargetView& a, const TargetView& b) {
-  std::size_t i = 0, j = 0, shared = 0;
-  double sum = 0.0;
+// Calls shared(i, j) for each corner two views share (a.ids[i] == b.ids[j]), in id order: a merge of
+// the two ascending id lists.
+template <class Shared>
+void forEachSharedCorner(const TargetView& a, const TargetView& b, Shared shared) {
+  std::size_t i = 0, j = 0;
   while (i < a.ids.size() && j < b.ids.size()) {
     if (a.ids[i] < b.ids[j]) {
       ++i;
     } else if (a.ids[i] > b.ids[j]) {
       ++j;
     } else {
-      sum += cv::norm(a.corners_px[i] - b.corners_px[j]);
-      ++shared;
+      shared(i, j);
       ++i;
       ++j;
     }
   }
+}
+
+// Mean distance between the corners two views share, or a negative value when they share less than
+// 80 % of the smaller view (different parts of the board: not a duplicate).
+double sharedCornerMotion(const TargetView& a, const TargetView& b) {
+  std::size_t shared = 0;
+  double sum = 0.0;
+  forEachSharedCorner(a, b, [&](std::size_t i, std::size_t j) {
+    sum += cv::norm(a.corners_px[i] - b.corners_px[j]);
+    ++shared;
+  });
   if (shared < 0.8 * std::min(a.ids.size(), b.ids.size()) || shared == 0) return -1.0;
   return sum / static_cast<double>(shared);
 }
@@ -72,20 +82,11 @@ std::string screen(const TargetView& left, const TargetView& right, const ViewSc
 void commonCorners(const TargetView& a, const TargetView& b, const std::vector<cv::Point3f>& board_corners_m,
                    std::vector<cv::Point3f>* object, std::vector<cv::Point2f>* image_a,
                    std::vector<cv::Point2f>* image_b) {
-  std::size_t i = 0, j = 0;
-  while (i < a.ids.size() && j < b.ids.size()) {
-    if (a.ids[i] < b.ids[j]) {
-      ++i;
-    } else if (a.ids[i] > b.ids[j]) {
-      ++j;
-    } else {
-      object->push_back(board_corners_m[a.ids[i]]);
-      image_a->push_back(a.corners_px[i]);
-      image_b->push_back(b.corners_px[j]);
-      ++i;
-      ++j;
-    }
-  }
+  forEachSharedCorner(a, b, [&](std::size_t i, std::size_t j) {
+    object->push_back(board_corners_m[a.ids[i]]);
+    image_a->push_back(a.corners_px[i]);
+    image_b->push_back(b.corners_px[j]);
+  });
 }
 
 double monoCalibration(const std::vector<KeptPair>& kept, bool right, const std::vector<cv::Point3f>& board_corners_m,
