@@ -66,6 +66,15 @@ class Seabed {
   bool descendsSteeply(const Eigen::Vector3f& d) const;  // faster than the steepest relief slope
   bool refine(const Eigen::Vector3f& o, const Eigen::Vector3f& d, float lo, float hi, float start, float* t,
               Eigen::Vector2f* slope) const;
+  // The relief grid cell under (x, y): its two rows of corner heights (r0, and r1 one cell further in
+  // y), how far across it the point is (ax, ay in [0, 1)), and the heights a, b interpolated along x on
+  // either row.
+  struct Cell {
+    const float* r0;
+    const float* r1;
+    float ax, ay, a, b;
+  };
+  bool cellAt(float x_m, float y_m, Cell* c) const;  // false outside the grid
   float sampleHeight(float x_m, float y_m) const;
   // Height and its exact slope (of the bilinear patch) at (x, y).
   void sampleHeightAndSlope(float x_m, float y_m, float* h, float* hx, float* hy) const;
@@ -88,33 +97,33 @@ class Seabed {
 };
 
 // Inline: the march calls these a few times per pixel.
-inline float Seabed::sampleHeight(float x_m, float y_m) const {
+inline bool Seabed::cellAt(float x_m, float y_m, Cell* c) const {
   const float gx = (x_m + kHalfExtent_m) * kInvCell, gy = (y_m + kHalfExtent_m) * kInvCell;
-  if (!(gx >= 0.0f && gy >= 0.0f && gx < nodes_ - 1 && gy < nodes_ - 1)) return 0.0f;
+  if (!(gx >= 0.0f && gy >= 0.0f && gx < nodes_ - 1 && gy < nodes_ - 1)) return false;
   const int ix = static_cast<int>(gx), iy = static_cast<int>(gy);
-  const float ax = gx - ix, ay = gy - iy;
-  const float* r0 = &height_m_[static_cast<std::size_t>(iy) * nodes_ + ix];
-  const float* r1 = r0 + nodes_;
-  const float a = r0[0] + ax * (r0[1] - r0[0]);
-  const float b = r1[0] + ax * (r1[1] - r1[0]);
-  return a + ay * (b - a);
+  c->ax = gx - ix;
+  c->ay = gy - iy;
+  c->r0 = &height_m_[static_cast<std::size_t>(iy) * nodes_ + ix];
+  c->r1 = c->r0 + nodes_;
+  c->a = c->r0[0] + c->ax * (c->r0[1] - c->r0[0]);
+  c->b = c->r1[0] + c->ax * (c->r1[1] - c->r1[0]);
+  return true;
+}
+
+inline float Seabed::sampleHeight(float x_m, float y_m) const {
+  Cell c;
+  return cellAt(x_m, y_m, &c) ? c.a + c.ay * (c.b - c.a) : 0.0f;
 }
 
 inline void Seabed::sampleHeightAndSlope(float x_m, float y_m, float* h, float* hx, float* hy) const {
-  const float gx = (x_m + kHalfExtent_m) * kInvCell, gy = (y_m + kHalfExtent_m) * kInvCell;
-  if (!(gx >= 0.0f && gy >= 0.0f && gx < nodes_ - 1 && gy < nodes_ - 1)) {
+  Cell c;
+  if (!cellAt(x_m, y_m, &c)) {
     *h = *hx = *hy = 0.0f;
     return;
   }
-  const int ix = static_cast<int>(gx), iy = static_cast<int>(gy);
-  const float ax = gx - ix, ay = gy - iy;
-  const float* r0 = &height_m_[static_cast<std::size_t>(iy) * nodes_ + ix];
-  const float* r1 = r0 + nodes_;
-  const float a = r0[0] + ax * (r0[1] - r0[0]);
-  const float b = r1[0] + ax * (r1[1] - r1[0]);
-  *h = a + ay * (b - a);
-  *hx = ((1.0f - ay) * (r0[1] - r0[0]) + ay * (r1[1] - r1[0])) * kInvCell;
-  *hy = (b - a) * kInvCell;
+  *h = c.a + c.ay * (c.b - c.a);
+  *hx = ((1.0f - c.ay) * (c.r0[1] - c.r0[0]) + c.ay * (c.r1[1] - c.r1[0])) * kInvCell;
+  *hy = (c.b - c.a) * kInvCell;
 }
 
 }  // namespace deepnav::sim
