@@ -4,6 +4,7 @@
 #include <opencv2/imgproc.hpp>
 
 #include "tests/support/synthetic_scene.h"
+#include "tests/unit/planes_test_scene.h"
 #include "vision/cloud/cloud_from_disparity.h"
 #include "vision/planes/plane_extractor.h"
 #include "vision/stereo/disparity_estimator.h"
@@ -11,21 +12,7 @@
 namespace deepnav {
 namespace {
 
-constexpr int kWidth = 320;
-constexpr int kHeight = 240;
-constexpr double kDeg = M_PI / 180.0;
-
-StereoGeometry geometry() { return centredStereoGeometry(400.0, kWidth, kHeight, 0.15); }
-
-// World z up. A floor and a box (yawed 40 deg, so two side faces and the top are visible); the
-// camera 1.6 m above the floor looking along world y, pitched 30 deg down.
-SyntheticScene boxOnFloor() {
-  SyntheticScene scene;
-  scene.rectangles.push_back(
-      {Eigen::Vector3d(0, 3, 0), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), 4.0, 4.0, 3});
-  scene.addBox(Eigen::Vector3d(0.0, 2.4, 0.0), Eigen::Vector3d(0.7, 0.7, 0.5), 40.0 * kDeg, 11);
-  return scene;
-}
+using namespace planes_test;
 
 // A rectangle's plane in the camera frame, oriented to the camera: (n, d) with n . p = d < 0.
 std::pair<Eigen::Vector3d, double> planeInCamera(const SyntheticRectangle& rect,
@@ -51,7 +38,7 @@ void addDisparityNoise(double sigma_px, cv::Mat* disparity) {
 
 struct Fixture {
   SyntheticScene scene = boxOnFloor();
-  Eigen::Isometry3d T_world_cam = cameraPitchedDown(30.0 * kDeg, Eigen::Vector3d(0.0, 0.0, 1.6));
+  Eigen::Isometry3d T_world_cam = cameraPitchedDown(30.0 * kDeg, Eigen::Vector3d(0.0, 0.0, 1.6));  // 1.6 m up
   SyntheticView view;
   OrganizedCloud cloud;
   PlaneExtractor extractor;

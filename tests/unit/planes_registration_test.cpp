@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "tests/support/synthetic_scene.h"
+#include "tests/unit/planes_test_scene.h"
 #include "vision/cloud/cloud_from_disparity.h"
 #include "vision/planes/plane_extractor.h"
 #include "vision/planes/plane_registration.h"
@@ -14,20 +15,7 @@
 namespace deepnav {
 namespace {
 
-constexpr int kWidth = 320;
-constexpr int kHeight = 240;
-constexpr double kDeg = M_PI / 180.0;
-
-StereoGeometry geometry() { return centredStereoGeometry(400.0, kWidth, kHeight, 0.15); }
-
-// Floor + a yawed box (top parallel to the floor, two sides: three non-parallel directions).
-SyntheticScene boxOnFloor() {
-  SyntheticScene scene;
-  scene.rectangles.push_back(
-      {Eigen::Vector3d(0, 3, 0), Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitY(), 4.0, 4.0, 3});
-  scene.addBox(Eigen::Vector3d(0.0, 2.4, 0.0), Eigen::Vector3d(0.7, 0.7, 0.5), 40.0 * kDeg, 11);
-  return scene;
-}
+using namespace planes_test;
 
 void extractPlanes(const SyntheticScene& scene, const Eigen::Isometry3d& T_world_cam,
                    double sigma_px, int seed, PlaneSet* planes) {

@@ -24,10 +24,8 @@ constexpr double kPi = std::numbers::pi;
 constexpr double kRadToDeg = 180.0 / kPi;
 
 KinematicState at(const Eigen::Vector3d& p_m, double yaw_rad) {
-  KinematicState s = restingState();
+  KinematicState s = test::restingStateYawed(yaw_rad);
   s.p_robot_in_odom_m = p_m;
-  s.yaw_rad = yaw_rad;
-  s.q_odom_robot = Eigen::AngleAxisd(yaw_rad, Eigen::Vector3d::UnitZ());
   return s;
 }
 

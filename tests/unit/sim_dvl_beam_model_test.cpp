@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "sim_test_dvl.h"
 #include "sim_test_stats.h"
 #include "tools/sim/rotation.h"
 #include "tools/sim/sensors/dvl_beam_solver.h"
@@ -15,25 +16,15 @@ namespace deepnav::sim {
 namespace {
 
 using test::mean;
+using test::makeDvl;
+using test::noiselessDvlConfig;
 using test::restingState;
 using test::stddev;
 
 // The beam model with nothing but the given terms: no per-axis or range noise, DVL at the robot origin.
-DvlConfig beamModel() {
-  DvlConfig c;
-  c.noise_fraction_of_speed = 0.0;
-  c.noise_floor_mps = 0.0;
-  c.range_noise_m = 0.0;
-  c.p_dvl_in_robot_m = {0.0, 0.0, 0.0};
-  return c;
-}
+DvlConfig beamModel() { return noiselessDvlConfig(); }
 
-DvlModel makeDvl(const DvlConfig& c, std::uint64_t seed = 11) {
-  DvlModel dvl;
-  std::string error;
-  EXPECT_TRUE(dvl.init(c, 0.0, seed, &error)) << error;
-  return dvl;
-}
+constexpr std::uint64_t kDvlSeed = 11;
 
 KinematicState moving(const Eigen::Vector3d& v_odom_mps, double height_m = 2.0) {
   KinematicState s = restingState(height_m);
@@ -86,7 +77,7 @@ void expectCovarianceMatches(const Eigen::Matrix3d& sample, const Eigen::Matrix3
 }
 
 TEST(SimDvlBeamSolver, FourLevelBeamsGiveTheJanusVariances) {
-  DvlModel dvl = makeDvl(beamModel());
+  DvlModel dvl = makeDvl(beamModel(), kDvlSeed);
   std::array<Eigen::Vector3d, kDvlBeams> beams;
   for (int i = 0; i < kDvlBeams; ++i) beams[i] = dvl.beamInDvl(i);
   const Eigen::Vector3d v_true(0.3, -0.1, 0.05);
@@ -111,7 +102,7 @@ TEST(SimDvlBeamModel, PerBeamNoiseGivesTheGeometrysVelocityCovariance) {
   c.beam_noise_fraction = 0.02;
   c.beam_noise_floor_mps = 0.002;
   c.mount_rpy_deg = {0.0, 0.0, 20.0};
-  DvlModel dvl = makeDvl(c);
+  DvlModel dvl = makeDvl(c, kDvlSeed);
   const KinematicState s = moving({0.4, -0.25, 0.05});
   const Eigen::Vector3d v_dvl = dvl.trueVelocity_mps(s);
   const Eigen::Matrix3d predicted = predictedCovariance(dvl, c, v_dvl, 0xF);
@@ -128,7 +119,7 @@ TEST(SimDvlBeamModel, ThreeBeamSolutionWhenOneBeamIsLostIsValidWithItsOwnCovaria
   c.beam_noise_floor_mps = 0.003;
   c.beam_azimuth_offset_deg = 0.0;
   c.max_altitude_m = 10.0;
-  DvlModel dvl = makeDvl(c);
+  DvlModel dvl = makeDvl(c, kDvlSeed);
   KinematicState s = moving({0.2, 0.1, 0.0}, 8.0);
   s.q_odom_robot = Eigen::AngleAxisd(20.0 * kDegToRad, Eigen::Vector3d::UnitY());
   constexpr std::uint8_t kAllButAft = 0b1011;
@@ -148,7 +139,7 @@ TEST(SimDvlBeamModel, ScaleFactorShowsInTheMeanRatioOfMeasuredToTrueVelocity) {
   DvlConfig c = beamModel();
   c.beam_noise_floor_mps = 0.002;
   c.scale_factor_percent = 1.5;
-  DvlModel dvl = makeDvl(c);
+  DvlModel dvl = makeDvl(c, kDvlSeed);
   const KinematicState s = moving({0.5, 0.0, 0.0});
   std::vector<double> ratio;
   for (int k = 0; k < 2000; ++k) ratio.push_back(dvl.measure(s, TimeUs{k} * 100000).v_dvl_mps.x() / 0.5);
@@ -181,14 +172,14 @@ TEST(SimDvlBeamModel, MisalignmentShowsInTheCrossAxisVelocity) {
   DvlConfig c = beamModel();
   c.beam_noise_floor_mps = 0.002;
   c.misalignment_rpy_deg = {0.0, 0.0, 2.0};
-  DvlModel dvl = makeDvl(c);
+  DvlModel dvl = makeDvl(c, kDvlSeed);
   const KinematicState s = moving({0.5, 0.0, 0.0});
   std::vector<double> cross;
   for (int k = 0; k < 2000; ++k) cross.push_back(dvl.measure(s, TimeUs{k} * 100000).v_dvl_mps.y());
   EXPECT_NEAR(mean(cross), -0.5 * std::sin(2.0 * kDegToRad), 3e-4);
   // Noiseless, the reading is exactly the board-frame velocity rotated by the misalignment.
   c.beam_noise_floor_mps = 0.0;
-  DvlModel exact = makeDvl(c);
+  DvlModel exact = makeDvl(c, kDvlSeed);
   const Eigen::Vector3d v_board(0.5, 0.0, 0.0);
   const Eigen::Vector3d expected = rotationFromRpyDeg({0.0, 0.0, 2.0}).transpose() * v_board;
   EXPECT_LT((exact.measure(s, 0).v_dvl_mps - expected).norm(), 1e-14);
@@ -218,7 +209,7 @@ TEST(SimDvlBeamModel, OutliersComeAtTheConfiguredProbability) {
   c.beam_noise_floor_mps = 0.001;
   c.outlier_probability = 0.05;
   c.outlier_magnitude_mps = 1.0;
-  DvlModel dvl = makeDvl(c);
+  DvlModel dvl = makeDvl(c, kDvlSeed);
   const KinematicState s = moving({0.2, 0.0, 0.0});
   const Eigen::Vector3d v_true = dvl.trueVelocity_mps(s);
   int hit = 0;
@@ -235,7 +226,7 @@ TEST(SimDvlBeamModel, NewTermsDoNotShiftThePerAxisNoise) {
   per_axis.p_dvl_in_robot_m = {0.0, 0.0, 0.0};
   DvlConfig with_scale = per_axis;
   with_scale.scale_factor_percent = 1e-9;
-  DvlModel a = makeDvl(per_axis), b = makeDvl(with_scale);
+  DvlModel a = makeDvl(per_axis, kDvlSeed), b = makeDvl(with_scale, kDvlSeed);
   const KinematicState s = moving({0.3, 0.2, 0.0});
   for (int k = 0; k < 50; ++k) {
     const DvlSample ma = a.measure(s, TimeUs{k} * 200000), mb = b.measure(s, TimeUs{k} * 200000);

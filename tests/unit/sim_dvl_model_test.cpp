@@ -5,33 +5,22 @@
 
 #include <gtest/gtest.h>
 
+#include "sim_test_dvl.h"
 #include "sim_test_stats.h"
 #include "tools/sim/rotation.h"
 
 namespace deepnav::sim {
 namespace {
 
+using test::makeDvl;
+using test::noiselessDvlConfig;
 using test::restingState;
 using test::stddev;
 
-DvlModel makeDvl(const DvlConfig& c, std::uint64_t seed = 3) {
-  DvlModel dvl;
-  std::string error;
-  EXPECT_TRUE(dvl.init(c, 0.0, seed, &error)) << error;
-  return dvl;
-}
-
-DvlConfig noiseless() {
-  DvlConfig c;
-  c.noise_fraction_of_speed = 0.0;
-  c.noise_floor_mps = 0.0;
-  c.range_noise_m = 0.0;
-  c.p_dvl_in_robot_m = {0.0, 0.0, 0.0};
-  return c;
-}
+constexpr std::uint64_t kDvlSeed = 3;
 
 TEST(SimDvlModel, NoiseIsHalfAPercentOfSpeedPlusOneMillimetre) {
-  DvlModel dvl = makeDvl(DvlConfig{});
+  DvlModel dvl = makeDvl(DvlConfig{}, kDvlSeed);
   KinematicState s = restingState(1.5);
   s.v_robot_in_odom_mps = {0.3, -0.4, 0.0};  // 0.5 m/s
   const double sigma = 0.005 * 0.5 + 0.001;
@@ -48,10 +37,10 @@ TEST(SimDvlModel, NoiseIsHalfAPercentOfSpeedPlusOneMillimetre) {
 }
 
 TEST(SimDvlModel, MeasuresTheLeverArmPointInTheMountedFrame) {
-  DvlConfig c = noiseless();
+  DvlConfig c = noiselessDvlConfig();
   c.p_dvl_in_robot_m = {1.0, 0.0, -0.5};
   c.mount_rpy_deg = {0.0, 0.0, 45.0};
-  DvlModel dvl = makeDvl(c);
+  DvlModel dvl = makeDvl(c, kDvlSeed);
   KinematicState s = restingState(3.0);
   s.v_robot_in_odom_mps = {0.2, 0.0, 0.0};
   s.w_robot_radps = {0.0, 0.0, 0.5};  // yawing: the DVL point at +1 m x moves +0.5 m/s along y
@@ -63,7 +52,7 @@ TEST(SimDvlModel, MeasuresTheLeverArmPointInTheMountedFrame) {
 }
 
 TEST(SimDvlModel, JanusBeamsRangeToAFlatSeabed) {
-  DvlModel dvl = makeDvl(noiseless());
+  DvlModel dvl = makeDvl(noiselessDvlConfig(), kDvlSeed);
   const DvlSample level = dvl.measure(restingState(2.0), 0);
   EXPECT_EQ(level.beam_valid_mask, 0xF);
   for (double r : level.beam_range_m) EXPECT_NEAR(r, 2.0 / std::cos(30.0 * kDegToRad), 1e-12);
@@ -81,10 +70,10 @@ TEST(SimDvlModel, JanusBeamsRangeToAFlatSeabed) {
 }
 
 TEST(SimDvlModel, DropsOutOutsideTheAltitudeWindow) {
-  DvlConfig c = noiseless();
+  DvlConfig c = noiselessDvlConfig();
   c.min_altitude_m = 0.5;
   c.max_altitude_m = 30.0;
-  DvlModel dvl = makeDvl(c);
+  DvlModel dvl = makeDvl(c, kDvlSeed);
   KinematicState s = restingState();
   s.v_robot_in_odom_mps = {0.1, 0.0, 0.0};
   for (double altitude : {0.4, 30.5, 100.0, -1.0}) {
@@ -102,9 +91,9 @@ TEST(SimDvlModel, DropsOutOutsideTheAltitudeWindow) {
 
 TEST(SimDvlModel, NeedsThreeBeams) {
   // Rolled 40 deg near the top of the window: the beams on the low side exceed max range.
-  DvlConfig c = noiseless();
+  DvlConfig c = noiselessDvlConfig();
   c.max_altitude_m = 10.0;
-  DvlModel dvl = makeDvl(c);
+  DvlModel dvl = makeDvl(c, kDvlSeed);
   KinematicState s = restingState(9.0);
   s.q_odom_robot = Eigen::AngleAxisd(40.0 * kDegToRad, Eigen::Vector3d::UnitX());
   const DvlSample m = dvl.measure(s, 0);

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include "sim_test_dvl.h"
 #include "sim_test_stats.h"
 #include "tools/sim/rotation.h"
 #include "tools/sim/sensor_simulator.h"
@@ -13,24 +14,17 @@
 namespace deepnav::sim {
 namespace {
 
+using test::makeDvl;
+using test::noiselessDvlConfig;
 using test::restingState;
 
 DvlConfig beamModel() {
-  DvlConfig c;
-  c.noise_fraction_of_speed = 0.0;
-  c.noise_floor_mps = 0.0;
-  c.range_noise_m = 0.0;
-  c.p_dvl_in_robot_m = {0.0, 0.0, 0.0};
+  DvlConfig c = noiselessDvlConfig();
   c.beam_noise_floor_mps = 0.001;
   return c;
 }
 
-DvlModel makeDvl(const DvlConfig& c, std::uint64_t seed = 5) {
-  DvlModel dvl;
-  std::string error;
-  EXPECT_TRUE(dvl.init(c, 0.0, seed, &error)) << error;
-  return dvl;
-}
+constexpr std::uint64_t kDvlSeed = 5;
 
 double normalCdf(double x) { return 0.5 * std::erfc(-x / std::sqrt(2.0)); }
 
@@ -50,7 +44,7 @@ TEST(SimDvlWindow, DropoutRateNearTheAltitudeWindowFollowsTheRangeNoise) {
   };
   for (const Case& k : {Case{5.0, 0.5}, Case{5.0 - sigma_vertical, normalCdf(1.0)},
                         Case{1.0 + 0.5 * sigma_vertical, normalCdf(0.5)}, Case{3.0, 1.0}, Case{5.3, 0.0}}) {
-    DvlModel dvl = makeDvl(c);
+    DvlModel dvl = makeDvl(c, kDvlSeed);
     const KinematicState s = restingState(k.height_m);
     constexpr int kPings = 4000;
     int beams = 0, valid = 0;
@@ -83,7 +77,7 @@ TEST(SimDvlPingRate, PingsSlowerAtHigherAltitude) {
   constexpr int kTicks = 2000;
   double previous_rate_hz = 1e9;
   for (const Case& k : {Case{1.0, 5}, Case{30.0, 8}, Case{60.0, 13}, Case{150.0, 19}}) {
-    DvlModel dvl = makeDvl(c);
+    DvlModel dvl = makeDvl(c, kDvlSeed);
     const KinematicState s = restingState(k.height_m);
     int pings = 0;
     for (int i = 0; i <= kTicks; ++i) {

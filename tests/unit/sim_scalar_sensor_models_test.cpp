@@ -19,12 +19,7 @@ using test::restingState;
 using test::stddev;
 constexpr double kPi = std::numbers::pi;
 
-KinematicState yawed(double yaw_rad) {
-  KinematicState s = restingState();
-  s.yaw_rad = yaw_rad;
-  s.q_odom_robot = Eigen::AngleAxisd(yaw_rad, Eigen::Vector3d::UnitZ());
-  return s;
-}
+KinematicState yawed(double yaw_rad) { return test::restingStateYawed(yaw_rad); }
 
 TEST(SimCompassModel, HeadingIsClockwiseFromNorthWithBiasAndDeclination) {
   CompassConfig c;

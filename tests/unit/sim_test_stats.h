@@ -3,6 +3,8 @@
 #include <cmath>
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include "tools/sim/kinematic_state.h"
 
 namespace deepnav::sim::test {
@@ -25,6 +27,14 @@ inline KinematicState restingState(double height_m = 1.5, double gravity_mps2 = 
   KinematicState s;
   s.p_robot_in_odom_m = {0.0, 0.0, height_m};
   s.f_robot_mps2 = {0.0, 0.0, gravity_mps2};
+  return s;
+}
+
+// The same, turned to yaw_rad about z (REP-103: 0 east, counter-clockwise).
+inline KinematicState restingStateYawed(double yaw_rad) {
+  KinematicState s = restingState();
+  s.yaw_rad = yaw_rad;
+  s.q_odom_robot = Eigen::AngleAxisd(yaw_rad, Eigen::Vector3d::UnitZ());
   return s;
 }
 
