@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "tests/support/synthetic_plane_scene.h"
+#include "tools/bench/one_core_main.h"
 #include "vision/orbvo/grid_orb_extractor.h"
 #include "vision/orbvo/orb_stereo_odometry.h"
 #include "vision/orbvo/stereo_feature_matcher.h"
@@ -154,11 +155,4 @@ BENCHMARK(BM_OrbVoLostFrameRelocalisation)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_OrbExtractOneImage)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StereoMatch)->Unit(benchmark::kMillisecond);
 
-int main(int argc, char** argv) {
-  cv::setNumThreads(0);  // one core, as on the vehicle's vision worker
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
-}
+int main(int argc, char** argv) { return deepnav::bench::runBenchmarksOnOneCore(argc, argv); }

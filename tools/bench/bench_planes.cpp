@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "tests/support/synthetic_scene.h"
+#include "tools/bench/one_core_main.h"
 #include "vision/cloud/cloud_from_disparity.h"
 #include "vision/cloud/mixed_pixel_filter.h"
 #include "vision/planes/plane_extractor.h"
@@ -326,11 +327,4 @@ BENCHMARK(BM_PlaneExtraction)
 BENCHMARK(BM_PlaneRegistration)->Unit(benchmark::kMicrosecond)->ComputeStatistics("min", minimum);
 BENCHMARK(BM_Chain)->Unit(benchmark::kMillisecond)->ComputeStatistics("min", minimum);
 
-int main(int argc, char** argv) {
-  cv::setNumThreads(0);  // one core, as on the vehicle's vision worker
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
-}
+int main(int argc, char** argv) { return deepnav::bench::runBenchmarksOnOneCore(argc, argv); }

@@ -20,6 +20,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "tools/bench/one_core_main.h"
 #include "tools/sim/render/stereo_renderer.h"
 #include "tools/sim/sensor_simulator.h"
 #include "vision/stereo/elas_disparity.h"
@@ -211,11 +212,7 @@ BENCHMARK(BM_ElasSyntheticDense)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_Sgbm)->Arg(0)->Arg(1)->ArgName("wls")->Unit(benchmark::kMillisecond);
 
 int main(int argc, char** argv) {
-  cv::setNumThreads(0);  // one core, as on the vehicle's vision worker
+  cv::setNumThreads(0);  // writing the dive pair runs on one core too
   if (const int code = writeDivePair(argc, argv); code >= 0) return code;
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return deepnav::bench::runBenchmarksOnOneCore(argc, argv);
 }
