@@ -43,10 +43,7 @@ DecodeRun decode(const std::string& format, const std::string& file) {
   return r;
 }
 
-std::filesystem::path shared() {
-  const char* env = std::getenv("DEEPNAV_SHARED_DATA");
-  return env ? std::filesystem::path(env) : std::filesystem::path();
-}
+std::filesystem::path shared() { return deepnav::testing::sharedDataDir(); }
 
 std::string writeTemp(const std::string& name, const std::string& bytes) {
   const std::string path = deepnav::testing::tempPath(name);

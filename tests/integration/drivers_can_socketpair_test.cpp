@@ -17,6 +17,7 @@
 
 #include "drivers/can/can_sensor_driver.h"
 #include "drivers/parsers/candump_line.h"
+#include "tests/support/source_paths.h"
 
 namespace deepnav {
 namespace {
@@ -76,9 +77,8 @@ void drain(CanSensorDriver* d, Collect* sink) {
 }
 
 TEST(CanSocketpair, Nmea2000CaptureGivesHeadingAndAttitude) {
-  const char* env = std::getenv("DEEPNAV_SHARED_DATA");
-  const auto file = env ? std::filesystem::path(env) / "can" / "candumpSample2.txt" : std::filesystem::path();
-  if (!env || !std::filesystem::exists(file)) GTEST_SKIP() << "DEEPNAV_SHARED_DATA not set";
+  const auto file = deepnav::testing::sharedDataDir() / "can" / "candumpSample2.txt";
+  if (!std::filesystem::exists(file)) GTEST_SKIP() << file << " absent";
   Pair pair;
   ASSERT_TRUE(pair.ok());
   CanSensorDriver driver;

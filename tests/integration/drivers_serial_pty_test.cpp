@@ -18,6 +18,7 @@
 
 #include "drivers/serial/serial_sensor_driver.h"
 #include "tests/support/sensor_frames.h"
+#include "tests/support/source_paths.h"
 
 namespace deepnav {
 namespace {
@@ -63,10 +64,7 @@ std::vector<uint8_t> readFile(const std::filesystem::path& p) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-std::filesystem::path shared() {
-  const char* env = std::getenv("DEEPNAV_SHARED_DATA");
-  return env ? std::filesystem::path(env) : std::filesystem::path();
-}
+std::filesystem::path shared() { return deepnav::testing::sharedDataDir(); }
 
 // Runs the driver until `done` says so or 3 s pass; the writer runs in its own thread.
 template <typename Done>

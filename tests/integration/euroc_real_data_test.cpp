@@ -36,10 +36,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path sharedDataDir() {
-  if (const char* env = std::getenv("DEEPNAV_SHARED_DATA")) return env;
-  return fs::path(deepnav::testing::sourceDir()) / ".." / "shared" / "data";
-}
+using deepnav::testing::sharedDataDir;
 
 const fs::path kBoard = fs::path(deepnav::testing::sourceDir()) / "board" / "euroc" / "board.yaml";
 // The images end 4.70 s after the first sample; imu0 runs on through the 145 s flight.

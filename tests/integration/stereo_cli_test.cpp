@@ -22,10 +22,7 @@
 namespace deepnav {
 namespace {
 
-std::filesystem::path sharedData() {
-  const char* env = std::getenv("DEEPNAV_SHARED_DATA");
-  return env ? std::filesystem::path(env) : std::filesystem::path(deepnav::testing::sourceDir()) / "../shared/data";
-}
+std::filesystem::path sharedData() { return deepnav::testing::sharedDataDir(); }
 
 class StereoCli : public ::testing::TestWithParam<const char*> {};
 

@@ -1,5 +1,7 @@
 #include "tests/support/source_paths.h"
 
+#include <cstdlib>
+
 namespace deepnav::testing {
 
 const std::string& sourceDir() {
@@ -10,6 +12,11 @@ const std::string& sourceDir() {
 const std::string& binDir() {
   static const std::string dir = DEEPNAV_BIN_DIR;
   return dir;
+}
+
+std::filesystem::path sharedDataDir() {
+  if (const char* env = std::getenv("DEEPNAV_SHARED_DATA")) return env;
+  return std::filesystem::path(sourceDir()) / ".." / "shared" / "data";
 }
 
 }  // namespace deepnav::testing

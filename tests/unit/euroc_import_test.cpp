@@ -34,10 +34,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path sharedDataDir() {
-  if (const char* env = std::getenv("DEEPNAV_SHARED_DATA")) return env;
-  return fs::path(deepnav::testing::sourceDir()) / ".." / "shared" / "data";
-}
+using deepnav::testing::sharedDataDir;
 
 // Scratch folders under the system's temp directory, removed when the binary ends.
 struct ScratchDirs {

@@ -14,10 +14,7 @@
 namespace deepnav {
 namespace {
 
-std::filesystem::path sharedDataDir() {
-  if (const char* env = std::getenv("DEEPNAV_SHARED_DATA")) return env;
-  return std::filesystem::path(deepnav::testing::sourceDir()) / ".." / "shared" / "data";
-}
+using deepnav::testing::sharedDataDir;
 
 TEST(Mdm, MatchesAuthorsReferenceCode) {
   const std::filesystem::path data = sharedDataDir();

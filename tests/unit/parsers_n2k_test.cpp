@@ -14,14 +14,12 @@
 #include "drivers/parsers/candump_line.h"
 #include "drivers/parsers/n2k_assembler.h"
 #include "drivers/parsers/n2k_heading_pgns.h"
+#include "tests/support/source_paths.h"
 
 namespace deepnav {
 namespace {
 
-std::filesystem::path canData() {
-  const char* env = std::getenv("DEEPNAV_SHARED_DATA");
-  return env ? std::filesystem::path(env) / "can" : std::filesystem::path();
-}
+std::filesystem::path canData() { return deepnav::testing::sharedDataDir() / "can"; }
 
 std::vector<N2kMessage> decodeCapture(const std::filesystem::path& path, int* bad_lines, int* errors,
                                       std::map<uint32_t, int>* fast_sizes) {

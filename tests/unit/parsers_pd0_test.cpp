@@ -17,14 +17,12 @@
 #include "drivers/parsers/pd0_ensemble.h"
 #include "drivers/parsers/pd0_framer.h"
 #include "tests/support/sensor_frames.h"
+#include "tests/support/source_paths.h"
 
 namespace deepnav {
 namespace {
 
-std::filesystem::path dvlData() {
-  const char* env = std::getenv("DEEPNAV_SHARED_DATA");
-  return env ? std::filesystem::path(env) / "dvl" : std::filesystem::path();
-}
+std::filesystem::path dvlData() { return deepnav::testing::sharedDataDir() / "dvl"; }
 
 std::vector<uint8_t> readAll(const std::filesystem::path& p) {
   std::ifstream in(p, std::ios::binary);

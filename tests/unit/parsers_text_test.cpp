@@ -16,14 +16,12 @@
 #include "drivers/parsers/pd6_sentence.h"
 #include "drivers/parsers/wl_dvl_protocol.h"
 #include "tests/support/sensor_frames.h"
+#include "tests/support/source_paths.h"
 
 namespace deepnav {
 namespace {
 
-std::filesystem::path nmeaData() {
-  const char* env = std::getenv("DEEPNAV_SHARED_DATA");
-  return env ? std::filesystem::path(env) / "nmea" : std::filesystem::path();
-}
+std::filesystem::path nmeaData() { return deepnav::testing::sharedDataDir() / "nmea"; }
 
 // Frames every line of `text` (fed in odd-sized chunks) and returns the lines and the errors.
 std::vector<std::string> lines(LineFramer* framer, const std::string& text, std::vector<FrameError>* errors) {

@@ -17,10 +17,7 @@
 namespace deepnav {
 namespace {
 
-std::filesystem::path sharedDataDir() {
-  if (const char* env = std::getenv("DEEPNAV_SHARED_DATA")) return env;
-  return std::filesystem::path(deepnav::testing::sourceDir()) / ".." / "shared" / "data";
-}
+using deepnav::testing::sharedDataDir;
 
 struct MiddleburyPair {
   cv::Mat left, right;  // BGR
