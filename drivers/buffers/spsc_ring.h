@@ -13,6 +13,8 @@ namespace deepnav {
 template <typename T>
 class SpscRing {
  public:
+  using value_type = T;
+
   SpscRing() = default;
   SpscRing(const SpscRing&) = delete;
   SpscRing& operator=(const SpscRing&) = delete;

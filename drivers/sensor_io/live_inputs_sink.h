@@ -22,11 +22,11 @@ enum SampleKind : uint8_t {
 class LiveInputsSink : public SampleSink {
  public:
   LiveInputsSink(LiveInputs* inputs, uint8_t kinds) : inputs_(inputs), kinds_(kinds) {}
-  bool onDvl(const DvlSample& s) override { return !(kinds_ & kSampleDvl) || inputs_->dvl.push(s); }
-  bool onHeading(const HeadingSample& s) override { return !(kinds_ & kSampleHeading) || inputs_->heading.push(s); }
-  bool onAttitude(const AttitudeSample& s) override { return !(kinds_ & kSampleAttitude) || inputs_->attitude.push(s); }
-  bool onImu(const ImuSample& s) override { return !(kinds_ & kSampleImu) || inputs_->imu.push(s); }
-  bool onDepth(const DepthSample& s) override { return !(kinds_ & kSampleDepth) || inputs_->depth.push(s); }
+  bool onDvl(const DvlSample& s) override { return !(kinds_ & kSampleDvl) || inputs_->ring<DvlSample>().push(s); }
+  bool onHeading(const HeadingSample& s) override { return !(kinds_ & kSampleHeading) || inputs_->ring<HeadingSample>().push(s); }
+  bool onAttitude(const AttitudeSample& s) override { return !(kinds_ & kSampleAttitude) || inputs_->ring<AttitudeSample>().push(s); }
+  bool onImu(const ImuSample& s) override { return !(kinds_ & kSampleImu) || inputs_->ring<ImuSample>().push(s); }
+  bool onDepth(const DepthSample& s) override { return !(kinds_ & kSampleDepth) || inputs_->ring<DepthSample>().push(s); }
 
  private:
   LiveInputs* inputs_;

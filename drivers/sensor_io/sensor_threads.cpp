@@ -67,7 +67,7 @@ void SensorThreads::runDepth(LiveInputs* inputs) {
   while (!stop_.load(std::memory_order_relaxed)) {
     DepthSample s;
     if (depth_->read(&s, &error)) {
-      inputs->depth.push(s);
+      inputs->ring<DepthSample>().push(s);
     } else {
       depth_failures_.fetch_add(1, std::memory_order_relaxed);
     }

@@ -118,11 +118,11 @@ TEST(SensorThreads, EveryDriverFeedsItsRing) {
   std::vector<DepthSample> depth;
   const auto until = std::chrono::steady_clock::now() + std::chrono::seconds(5);
   while (std::chrono::steady_clock::now() < until) {
-    drainRing(&inputs.dvl, &dvl);
-    drainRing(&inputs.imu, &imu);
-    drainRing(&inputs.attitude, &attitude);
-    drainRing(&inputs.heading, &heading);
-    drainRing(&inputs.depth, &depth);
+    drainRing(&inputs.ring<DvlSample>(), &dvl);
+    drainRing(&inputs.ring<ImuSample>(), &imu);
+    drainRing(&inputs.ring<AttitudeSample>(), &attitude);
+    drainRing(&inputs.ring<HeadingSample>(), &heading);
+    drainRing(&inputs.ring<DepthSample>(), &depth);
     if (dvl.size() == 20 && imu.size() == 100 && heading.size() == 30 && depth.size() >= 5) break;
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }

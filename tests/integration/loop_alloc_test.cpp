@@ -34,11 +34,12 @@ std::vector<sim::SimEvent> simulate(double duration_s) {
 void pushDue(LiveInputs& in, const std::vector<sim::SimEvent>& events, std::size_t* next, TimeUs t_us) {
   for (; *next < events.size() && events[*next].t_us <= t_us; ++*next) {
     const auto& s = events[*next].sample;
-    if (const auto* imu = std::get_if<ImuSample>(&s)) in.imu.push(*imu);
-    else if (const auto* dvl = std::get_if<DvlSample>(&s)) in.dvl.push(*dvl);
-    else if (const auto* h = std::get_if<HeadingSample>(&s)) in.heading.push(*h);
-    else if (const auto* a = std::get_if<AttitudeSample>(&s)) in.attitude.push(*a);
-    else if (const auto* d = std::get_if<DepthSample>(&s)) in.depth.push(*d);
+    std::visit(
+        [&in](const auto& v) {
+          using T = std::decay_t<decltype(v)>;
+          if constexpr (kHasLiveRing<T>) in.ring<T>().push(v);  // sensors only, not truth or camera ticks
+        },
+        s);
   }
 }
 
