@@ -11,6 +11,7 @@
 
 #include "board/cli/decode_json.h"
 #include "drivers/parsers/candump_line.h"
+#include "drivers/parsers/frame_pump.h"
 #include "drivers/parsers/line_framer.h"
 #include "drivers/parsers/n2k_assembler.h"
 #include "drivers/parsers/pd0_framer.h"
@@ -108,33 +109,20 @@ class Reporter {
 // Streams the file through `framer` in 64 KiB reads; calls on_frame for each complete frame. At the end
 // of the file the framer frames what it holds without waiting for more.
 template <typename Framer>
-bool pump(std::ifstream& in, Framer* framer, Reporter* rep, const std::function<void(const RawFrame&)>& on_frame) {
+void pump(std::ifstream& in, Framer* framer, Reporter* rep, const std::function<void(const RawFrame&)>& on_frame) {
   std::vector<char> chunk(65536);
   size_t have = 0, used = 0;
-  bool ended = false;
-  while (true) {
-    RawFrame f;
-    FrameError e;
-    const FrameStatus st = framer->next(&f, &e);
-    if (st == FrameStatus::kFrame) {
-      on_frame(f);
-    } else if (st == FrameStatus::kBad) {
-      rep->bad(e.offset, e.reason, e.skipped);
-    } else {
-      if (ended) return true;
-      if (used == have) {
-        in.read(chunk.data(), std::streamsize(chunk.size()));
-        have = size_t(in.gcount());
-        used = 0;
-        if (have == 0) {
-          framer->endOfInput();
-          ended = true;
-          continue;
-        }
-      }
-      used += framer->push(reinterpret_cast<const uint8_t*>(chunk.data()) + used, have - used);
+  const auto read_more = [&](Framer* fr) {
+    if (used == have) {
+      in.read(chunk.data(), std::streamsize(chunk.size()));
+      have = size_t(in.gcount());
+      used = 0;
+      if (have == 0) return false;
     }
-  }
+    used += fr->push(reinterpret_cast<const uint8_t*>(chunk.data()) + used, have - used);
+    return true;
+  };
+  frameToEnd(framer, read_more, on_frame, [rep](const FrameError& e) { rep->bad(e.offset, e.reason, e.skipped); });
 }
 
 // Splits the file at LF or CR (a bare CR ends a line too) in 64 KiB reads; a line longer than

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "drivers/parsers/candump_line.h"
+#include "drivers/parsers/frame_pump.h"
 #include "drivers/parsers/line_framer.h"
 #include "drivers/parsers/nmea0183_sentence.h"
 #include "drivers/parsers/pd0_framer.h"
@@ -42,26 +43,16 @@ template <typename Framer>
 Framing frameStream(Framer* framer, const Bytes& stream, size_t chunk, bool end = true) {
   Framing r;
   size_t pos = 0;
-  bool ended = false;
-  while (true) {
-    RawFrame f;
-    FrameError e;
-    const FrameStatus st = framer->next(&f, &e);
-    if (st == FrameStatus::kFrame) {
-      r.frames.push_back({f.offset, Bytes(f.data, f.data + f.size)});
-    } else if (st == FrameStatus::kBad) {
-      r.errors.push_back(e);
-    } else if (pos < stream.size()) {
-      pos += framer->push(stream.data() + pos, std::min(chunk, stream.size() - pos));
-    } else if (end && !ended) {
-      r.live_frames = r.frames.size();
-      framer->endOfInput();
-      ended = true;
-    } else {
-      break;
-    }
-  }
-  if (!ended) r.live_frames = r.frames.size();
+  const auto feed = [&](Framer* fr) {
+    if (pos == stream.size()) return false;
+    pos += fr->push(stream.data() + pos, std::min(chunk, stream.size() - pos));
+    return true;
+  };
+  const auto on_frame = [&](const RawFrame& f) { r.frames.push_back({f.offset, Bytes(f.data, f.data + f.size)}); };
+  const auto on_bad = [&](const FrameError& e) { r.errors.push_back(e); };
+  frameWhileFed(framer, feed, on_frame, on_bad);
+  r.live_frames = r.frames.size();
+  if (end) frameTheRest(framer, on_frame, on_bad);
   return r;
 }
 

@@ -12,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include "drivers/parsers/frame_pump.h"
 #include "drivers/parsers/frame_result.h"
 
 namespace deepnav::fuzz {
@@ -76,22 +77,12 @@ class IntactFrames {
 template <typename Framer, typename OnFrame>
 void frameToEnd(Framer* framer, const std::vector<uint8_t>& bytes, OnFrame on_frame) {
   size_t pos = 0;
-  bool ended = false;
-  while (true) {
-    RawFrame f;
-    FrameError e;
-    const FrameStatus st = framer->next(&f, &e);
-    if (st == FrameStatus::kFrame) on_frame(f);
-    if (st != FrameStatus::kNeedMore) continue;
-    if (pos < bytes.size()) {
-      pos += framer->push(bytes.data() + pos, bytes.size() - pos);
-    } else if (!ended) {
-      framer->endOfInput();
-      ended = true;
-    } else {
-      return;
-    }
-  }
+  const auto feed = [&](Framer* fr) {
+    if (pos == bytes.size()) return false;
+    pos += fr->push(bytes.data() + pos, bytes.size() - pos);
+    return true;
+  };
+  deepnav::frameToEnd(framer, feed, on_frame, [](const FrameError&) {});
 }
 
 inline std::string str(const std::vector<uint8_t>& v) { return {v.begin(), v.end()}; }
