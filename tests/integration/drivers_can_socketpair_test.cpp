@@ -76,17 +76,27 @@ void drain(CanSensorDriver* d, Collect* sink) {
   }
 }
 
-TEST(CanSocketpair, Nmea2000CaptureGivesHeadingAndAttitude) {
+// The driver on one end of a socket pair, the test writing frames into the other; a test sets `config` then
+// calls start().
+class CanSocketpair : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_TRUE(pair.ok());
+    config.interface = "test";
+  }
+  void start() { ASSERT_TRUE(driver.initOnSocket(config, pair.driverEnd(), &error)) << error; }
+
+  Pair pair;
+  CanSensorDriver driver;
+  CanSensorConfig config;
+  std::string error;
+};
+
+TEST_F(CanSocketpair, Nmea2000CaptureGivesHeadingAndAttitude) {
   const auto file = deepnav::testing::sharedDataDir() / "can" / "candumpSample2.txt";
   if (!std::filesystem::exists(file)) GTEST_SKIP() << file << " absent";
-  Pair pair;
-  ASSERT_TRUE(pair.ok());
-  CanSensorDriver driver;
-  std::string error;
-  CanSensorConfig config;
-  config.interface = "test";
   config.heading_source = 128;
-  ASSERT_TRUE(driver.initOnSocket(config, pair.driverEnd(), &error)) << error;
+  ASSERT_NO_FATAL_FAILURE(start());
   std::vector<CanFrame> frames;
   std::ifstream in(file);
   std::string line;
@@ -113,15 +123,9 @@ TEST(CanSocketpair, Nmea2000CaptureGivesHeadingAndAttitude) {
   EXPECT_NEAR(sink.attitude.front().roll_rad, 0.0007, 1e-12);
 }
 
-TEST(CanSocketpair, HeadingFromAnotherSourceIsIgnored) {
-  Pair pair;
-  ASSERT_TRUE(pair.ok());
-  CanSensorDriver driver;
-  std::string error;
-  CanSensorConfig config;
-  config.interface = "test";
+TEST_F(CanSocketpair, HeadingFromAnotherSourceIsIgnored) {
   config.heading_source = 5;
-  ASSERT_TRUE(driver.initOnSocket(config, pair.driverEnd(), &error)) << error;
+  ASSERT_NO_FATAL_FAILURE(start());
   CanFrame f;
   f.extended = true;
   f.id = (2u << 26) | (127250u << 8) | 128;  // source 128, not 5
@@ -138,17 +142,11 @@ TEST(CanSocketpair, HeadingFromAnotherSourceIsIgnored) {
   EXPECT_NEAR(sink.heading[0].heading_rad, 1.0, 1e-12);
 }
 
-TEST(CanSocketpair, MappedImuFrames) {
-  Pair pair;
-  ASSERT_TRUE(pair.ok());
-  CanSensorDriver driver;
-  std::string error;
-  CanSensorConfig config;
-  config.interface = "test";
+TEST_F(CanSocketpair, MappedImuFrames) {
   config.imu_mapping =
       "0x0CF02A80:0:i16le:0.001:gyro_x;0x0CF02A80:2:i16le:0.001:gyro_y;0x0CF02A80:4:i16le:0.001:gyro_z;"
       "0x08F02D80:0:i16le:0.01:accel_x;0x08F02D80:2:i16le:0.01:accel_y;0x08F02D80:4:i16le:0.01:accel_z";
-  ASSERT_TRUE(driver.initOnSocket(config, pair.driverEnd(), &error)) << error;
+  ASSERT_NO_FATAL_FAILURE(start());
   for (int i = 0; i < 10; ++i) {
     CanFrame g;
     g.extended = true, g.id = 0x0CF02A80, g.dlc = 8;
@@ -167,15 +165,9 @@ TEST(CanSocketpair, MappedImuFrames) {
   EXPECT_NEAR(sink.imu[9].f_imu_mps2.z(), 9.8, 1e-12);
 }
 
-TEST(CanSocketpair, ErrorFramesDriveTheBusState) {
-  Pair pair;
-  ASSERT_TRUE(pair.ok());
-  CanSensorDriver driver;
-  std::string error;
-  CanSensorConfig config;
-  config.interface = "test";
+TEST_F(CanSocketpair, ErrorFramesDriveTheBusState) {
   config.bus_off_recovery_s = 0.05;
-  ASSERT_TRUE(driver.initOnSocket(config, pair.driverEnd(), &error)) << error;
+  ASSERT_NO_FATAL_FAILURE(start());
   Collect sink;
   pair.sendError(CAN_ERR_CRTL | CAN_ERR_CNT, CAN_ERR_CRTL_TX_WARNING, 97, 3);
   ASSERT_TRUE(driver.poll(100, &sink));
