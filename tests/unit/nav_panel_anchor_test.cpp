@@ -54,15 +54,20 @@ RelativePoseMeasurement stillRelativeToAnchor(TimeUs t_us, std::uint32_t id) {
   return m;
 }
 
+// A filter at rest for 1 s, then the panel anchored at panelPose() against a clone of that instant.
+void anchorAtOneSecond(Ekf* ekf, PanelAnchor* anchor) {
+  startAtRest(ekf);
+  restingImuUntil(ekf, 1'000'000);
+  anchor->anchor(1'000'000, panelPose(), ekf);
+}
+
 double yawOf(const Eigen::Matrix3d& R) { return std::atan2(R(1, 0), R(0, 0)); }
 
 TEST(PanelAnchor, MarkersAgainstTheCloneKeepThePanelsOdomErrorInTheCovariance) {
   // GIVEN a filter with 0.5 m of position uncertainty, anchored at 1 s
   Ekf ekf;
-  startAtRest(&ekf);
-  restingImuUntil(&ekf, 1'000'000);
   PanelAnchor anchor;
-  anchor.anchor(1'000'000, panelPose(), &ekf);
+  anchorAtOneSecond(&ekf, &anchor);
   ASSERT_TRUE(anchor.ready(ekf));
   EXPECT_TRUE(anchor.T_odom_panel(ekf).isApprox(panelPose(), 1e-12));
   // WHEN 100 millimetre-grade marker poses relative to the anchor are fused over 10 s
@@ -86,10 +91,8 @@ TEST(PanelAnchor, MarkersAgainstTheCloneKeepThePanelsOdomErrorInTheCovariance) {
 TEST(PanelAnchor, ACompassUpdateTurnsThePanelWithTheRobot) {
   // GIVEN an anchored panel and markers holding the robot relative to it
   Ekf ekf;
-  startAtRest(&ekf);
-  restingImuUntil(&ekf, 1'000'000);
   PanelAnchor anchor;
-  anchor.anchor(1'000'000, panelPose(), &ekf);
+  anchorAtOneSecond(&ekf, &anchor);
   for (int k = 1; k <= 20; ++k) {
     const TimeUs t = 1'000'000 + k * 100'000;
     restingImuUntil(&ekf, t);
@@ -124,10 +127,8 @@ TEST(PanelAnchor, ACompassUpdateTurnsThePanelWithTheRobot) {
 TEST(PanelAnchor, AResetThatDropsTheCloneIsSurvivedWithTheLastPanelPose) {
   // GIVEN an anchored panel
   Ekf ekf;
-  startAtRest(&ekf);
-  restingImuUntil(&ekf, 1'000'000);
   PanelAnchor anchor;
-  anchor.anchor(1'000'000, panelPose(), &ekf);
+  anchorAtOneSecond(&ekf, &anchor);
   ASSERT_TRUE(anchor.ready(ekf));
   const std::uint32_t first_id = anchor.cloneId();
   // WHEN the filter is reset (every clone dropped)

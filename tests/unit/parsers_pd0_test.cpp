@@ -196,6 +196,15 @@ TEST(Pd0Parser, BadChecksumIsReportedAndTheNextEnsembleIsFound) {
   EXPECT_EQ(bad.ensembles.back()->variable.ensemble_number, good.ensembles.back()->variable.ensemble_number);
 }
 
+// The ensemble `spec` describes, built, decoded and converted to a DVL sample stamped t_us.
+void decodeToSample(const test::Pd0Spec& spec, TimeUs t_us, DvlSample* s) {
+  const auto bytes = test::buildPd0(spec);
+  Pd0Ensemble e;
+  const char* why = "";
+  ASSERT_TRUE(decodePd0Ensemble(bytes.data(), bytes.size(), &e, &why)) << why;
+  ASSERT_TRUE(pd0ToDvlSample(e, t_us, s));
+}
+
 TEST(Pd0Parser, InstrumentFrameVelocityBecomesFluDvlMotion) {
   test::Pd0Spec spec;
   spec.frame = 1;
@@ -203,12 +212,8 @@ TEST(Pd0Parser, InstrumentFrameVelocityBecomesFluDvlMotion) {
   spec.bt_velocity_mmps[1] = -500;  // bottom moves aft -> DVL moves forward
   spec.bt_velocity_mmps[2] = 20;    // bottom moves up -> DVL moves down
   spec.bt_velocity_mmps[3] = 7;
-  const auto bytes = test::buildPd0(spec);
-  Pd0Ensemble e;
-  const char* why = "";
-  ASSERT_TRUE(decodePd0Ensemble(bytes.data(), bytes.size(), &e, &why)) << why;
   DvlSample s;
-  ASSERT_TRUE(pd0ToDvlSample(e, 42, &s));
+  ASSERT_NO_FATAL_FAILURE(decodeToSample(spec, 42, &s));
   EXPECT_TRUE(s.valid);
   EXPECT_EQ(s.t_us, 42);
   EXPECT_NEAR(s.v_dvl_mps.x(), 0.5, 1e-12);
@@ -226,12 +231,8 @@ TEST(Pd0Parser, EarthFrameIsRotatedBackWithHeadingPitchRoll) {
   spec.frame = 3;
   spec.heading_cdeg = 9000;
   spec.bt_velocity_mmps[0] = -800;
-  const auto bytes = test::buildPd0(spec);
-  Pd0Ensemble e;
-  const char* why = "";
-  ASSERT_TRUE(decodePd0Ensemble(bytes.data(), bytes.size(), &e, &why)) << why;
   DvlSample s;
-  ASSERT_TRUE(pd0ToDvlSample(e, 0, &s));
+  ASSERT_NO_FATAL_FAILURE(decodeToSample(spec, 0, &s));
   EXPECT_NEAR(s.v_dvl_mps.x(), 0.8, 1e-9);
   EXPECT_NEAR(s.v_dvl_mps.y(), 0.0, 1e-9);
   EXPECT_NEAR(s.v_dvl_mps.z(), 0.0, 1e-9);
@@ -246,12 +247,8 @@ TEST(Pd0Parser, BeamVelocitiesUseTheJanusMatrix) {
   const int16_t along = int16_t(std::lround(1000 * u * std::sin(theta)));
   spec.bt_velocity_mmps[2] = along;  // beam 3 forward
   spec.bt_velocity_mmps[3] = int16_t(-along);
-  const auto bytes = test::buildPd0(spec);
-  Pd0Ensemble e;
-  const char* why = "";
-  ASSERT_TRUE(decodePd0Ensemble(bytes.data(), bytes.size(), &e, &why)) << why;
   DvlSample s;
-  ASSERT_TRUE(pd0ToDvlSample(e, 0, &s));
+  ASSERT_NO_FATAL_FAILURE(decodeToSample(spec, 0, &s));
   EXPECT_NEAR(s.v_dvl_mps.x(), u, 2e-3);
   EXPECT_NEAR(s.v_dvl_mps.y(), 0.0, 1e-9);
   EXPECT_NEAR(s.v_dvl_mps.z(), 0.0, 1e-9);
