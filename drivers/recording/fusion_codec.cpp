@@ -5,6 +5,7 @@
 
 #include "drivers/cdr/cdr_reader.h"
 #include "drivers/cdr/cdr_writer.h"
+#include "drivers/recording/stamped_header.h"
 #include "drivers/recording/topics.h"
 
 namespace deepnav {
@@ -26,17 +27,9 @@ std::string_view fusionReasonName(FusionReason reason) {
   return i < kReasonNames.size() ? kReasonNames[i] : std::string_view("unknown");
 }
 
-// Header as sample_codec.cpp writes it: builtin_interfaces/Time (floor division keeps nanosec >= 0).
 std::size_t encodeFusion(const FusionDiagnostic& d, std::uint8_t* out, std::size_t capacity) {
   cdr::CdrWriter w(out, capacity);
-  TimeUs sec = d.t_us / kUsPerS, rem = d.t_us % kUsPerS;
-  if (rem < 0) {
-    rem += kUsPerS;
-    --sec;
-  }
-  w.i32(static_cast<std::int32_t>(sec));
-  w.u32(static_cast<std::uint32_t>(rem * 1000));
-  w.string(topicInfo(Topic::kFusion).frame_id);
+  writeStampedHeader(w, d.t_us, Topic::kFusion);
   w.u8(static_cast<std::uint8_t>(d.source));
   w.string(sourceName(d.source));
   w.u8(static_cast<std::uint8_t>(d.reason));
@@ -54,14 +47,13 @@ std::size_t encodeFusion(const FusionDiagnostic& d, std::uint8_t* out, std::size
 
 bool decodeFusion(const std::uint8_t* data, std::size_t size, FusionDiagnostic* d) {
   cdr::CdrReader r(data, size);
-  std::int32_t sec = 0;
-  std::uint32_t nanosec = 0, n = 0, n_var = 0;
-  std::string frame_id, source_name, reason_name;
+  TimeUs t_us = 0;
+  std::uint32_t n = 0, n_var = 0;
+  std::string source_name, reason_name;
   std::uint8_t source = 0, reason = 0;
   bool fused = false;
-  if (!r.i32(&sec) || !r.u32(&nanosec) || !r.string(&frame_id) || nanosec >= 1000000000u || !r.u8(&source) ||
-      !r.string(&source_name) || !r.u8(&reason) || !r.string(&reason_name) || !r.boolean(&fused) ||
-      !r.sequenceLength(&n, 8) || n > kFusionMaxDim) {
+  if (!readStampedHeader(r, &t_us) || !r.u8(&source) || !r.string(&source_name) || !r.u8(&reason) ||
+      !r.string(&reason_name) || !r.boolean(&fused) || !r.sequenceLength(&n, 8) || n > kFusionMaxDim) {
     return false;
   }
   for (std::uint32_t i = 0; i < n; ++i) {
@@ -75,7 +67,7 @@ bool decodeFusion(const std::uint8_t* data, std::size_t size, FusionDiagnostic* 
       reason >= kReasonNames.size()) {
     return false;
   }
-  d->t_us = static_cast<TimeUs>(sec) * kUsPerS + static_cast<TimeUs>(nanosec / 1000);
+  d->t_us = t_us;
   d->source = static_cast<NavSource>(source);
   d->reason = static_cast<FusionReason>(reason);
   d->dim = static_cast<std::uint8_t>(n);

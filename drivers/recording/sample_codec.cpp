@@ -8,6 +8,7 @@
 #include "drivers/cdr/cdr_reader.h"
 #include "drivers/cdr/cdr_writer.h"
 #include "drivers/cdr/ros_msg_codec.h"
+#include "drivers/recording/stamped_header.h"
 #include "nav/types/loop_stats.h"
 
 namespace deepnav {
@@ -16,26 +17,8 @@ namespace {
 using cdr::CdrReader;
 using cdr::CdrWriter;
 
-// Stamps: t_us on the system clock as builtin_interfaces/Time (floor division keeps nanosec >= 0).
-ros::Time toStamp(TimeUs t_us) {
-  TimeUs sec = t_us / kUsPerS;
-  TimeUs rem = t_us % kUsPerS;
-  if (rem < 0) {
-    rem += kUsPerS;
-    --sec;
-  }
-  return ros::Time{static_cast<std::int32_t>(sec), static_cast<std::uint32_t>(rem * 1000)};
-}
-
 TimeUs fromStamp(const ros::Time& t) {
   return static_cast<TimeUs>(t.sec) * kUsPerS + static_cast<TimeUs>(t.nanosec / 1000);
-}
-
-void writeHeader(CdrWriter& w, TimeUs t_us, Topic topic) {
-  const ros::Time stamp = toStamp(t_us);
-  w.i32(stamp.sec);
-  w.u32(stamp.nanosec);
-  w.string(topicInfo(topic).frame_id);
 }
 
 bool readHeader(CdrReader& r, TimeUs* t_us) {
@@ -73,7 +56,7 @@ std::size_t finish(std::uint8_t* out, std::size_t capacity, Fn&& fn) {
 }
 
 void writeImu(CdrWriter& w, const ImuSample& s) {
-  writeHeader(w, s.t_us, Topic::kImu);
+  writeStampedHeader(w, s.t_us, Topic::kImu);
   writeQuat(w, s.q_odom_imu);
   double cov[9] = {};
   if (s.has_orientation) {
@@ -101,7 +84,7 @@ bool readImu(CdrReader& r, ImuSample* s) {
 }
 
 void writeBottomTrack(CdrWriter& w, const DvlSample& s) {
-  writeHeader(w, s.t_us, Topic::kDvlBottomTrack);
+  writeStampedHeader(w, s.t_us, Topic::kDvlBottomTrack);
   writeVec3(w, s.v_dvl_mps);
   const Eigen::Matrix<double, 3, 3, Eigen::RowMajor> cov = s.cov_v_dvl_mps2;
   w.f64Array(cov.data(), 9);
@@ -124,7 +107,7 @@ bool readBottomTrack(CdrReader& r, DvlSample* s) {
 }
 
 void writeDvlTwist(CdrWriter& w, const DvlSample& s) {
-  writeHeader(w, s.t_us, Topic::kDvl);
+  writeStampedHeader(w, s.t_us, Topic::kDvl);
   writeVec3(w, s.v_dvl_mps);
   writeVec3(w, Eigen::Vector3d::Zero());
   double cov[36] = {};
@@ -136,7 +119,7 @@ void writeDvlTwist(CdrWriter& w, const DvlSample& s) {
 }
 
 void writeDepth(CdrWriter& w, const DepthSample& s) {
-  writeHeader(w, s.t_us, Topic::kDepth);
+  writeStampedHeader(w, s.t_us, Topic::kDepth);
   w.f64(s.depth_m);
   w.f64(s.pressure_pa);
   w.f64(s.sigma_m);
@@ -147,13 +130,13 @@ bool readDepth(CdrReader& r, DepthSample* s) {
 }
 
 void writePressure(CdrWriter& w, const DepthSample& s) {
-  writeHeader(w, s.t_us, Topic::kPressure);
+  writeStampedHeader(w, s.t_us, Topic::kPressure);
   w.f64(s.pressure_pa);
   w.f64(0.0);
 }
 
 void writeHeading(CdrWriter& w, const HeadingSample& s) {
-  writeHeader(w, s.t_us, Topic::kHeading);
+  writeStampedHeader(w, s.t_us, Topic::kHeading);
   w.f64(s.heading_rad);
   w.boolean(s.is_true);
   w.f64(s.sigma_rad);
@@ -164,7 +147,7 @@ bool readHeading(CdrReader& r, HeadingSample* s) {
 }
 
 void writeAttitude(CdrWriter& w, const AttitudeSample& s) {
-  writeHeader(w, s.t_us, Topic::kAttitude);
+  writeStampedHeader(w, s.t_us, Topic::kAttitude);
   w.f64(s.roll_rad);
   w.f64(s.pitch_rad);
   w.f64(s.sigma_rad);
@@ -232,7 +215,7 @@ bool readVo(CdrReader& r, VoMeasurement* m) {
 }
 
 void writeVision(CdrWriter& w, const VisionResult& s) {
-  writeHeader(w, s.t_us, Topic::kVisionResult);
+  writeStampedHeader(w, s.t_us, Topic::kVisionResult);
   w.u64(s.sequence);
   w.u32(s.processing_us);
   w.boolean(s.frame_ok);
@@ -365,7 +348,7 @@ bool decodeInput(Topic topic, const std::uint8_t* data, std::size_t size, InputS
 
 std::size_t encodeSolution(const NavSolution& s, std::uint8_t* out, std::size_t capacity) {
   return finish(out, capacity, [&](CdrWriter& w) {
-    writeHeader(w, s.t_us, Topic::kNavSolution);
+    writeStampedHeader(w, s.t_us, Topic::kNavSolution);
     writeVec3(w, s.p_robot_in_odom_m);
     writeQuat(w, s.q_odom_robot);
     writeVec3(w, s.v_robot_in_odom_mps);
@@ -406,7 +389,7 @@ static std::size_t encodeOdometryMsg(TimeUs t_us, Topic topic, const Eigen::Vect
                                      const Eigen::Vector3d& w_robot, const Eigen::Matrix3d& cov_v_odom,
                                      std::uint8_t* out, std::size_t capacity) {
   return finish(out, capacity, [&](CdrWriter& w) {
-    writeHeader(w, t_us, topic);
+    writeStampedHeader(w, t_us, topic);
     w.string("base_link");
     writeVec3(w, p);
     writeQuat(w, q);
@@ -448,7 +431,7 @@ bool decodeTruth(const std::uint8_t* data, std::size_t size, TruthSample* s) {
 
 std::size_t encodeStereoInfo(const StereoFrame& f, std::uint8_t* out, std::size_t capacity) {
   return finish(out, capacity, [&](CdrWriter& w) {
-    writeHeader(w, f.t_us, Topic::kStereoInfo);
+    writeStampedHeader(w, f.t_us, Topic::kStereoInfo);
     w.u32(f.exposure_us);
     w.u64(f.sequence);
     w.boolean(f.rectified);
@@ -464,7 +447,7 @@ bool decodeStereoInfo(const std::uint8_t* data, std::size_t size, StereoFrame* f
 std::size_t encodeImage(const StereoFrame& f, bool left, std::uint8_t* out, std::size_t capacity) {
   const cv::Mat& img = left ? f.left : f.right;
   return finish(out, capacity, [&](CdrWriter& w) {
-    writeHeader(w, f.t_us, left ? Topic::kLeftImage : Topic::kRightImage);
+    writeStampedHeader(w, f.t_us, left ? Topic::kLeftImage : Topic::kRightImage);
     w.u32(static_cast<std::uint32_t>(img.rows));
     w.u32(static_cast<std::uint32_t>(img.cols));
     w.string(img.channels() == 3 ? "bgr8" : "mono8");
@@ -504,7 +487,7 @@ bool decodeImageInto(const std::uint8_t* data, std::size_t size, bool left, Ster
 
 std::size_t encodeLoopStats(TimeUs t_us, const LoopStats& s, std::uint8_t* out, std::size_t capacity) {
   return finish(out, capacity, [&](CdrWriter& w) {
-    writeHeader(w, t_us, Topic::kLoopStats);
+    writeStampedHeader(w, t_us, Topic::kLoopStats);
     const auto n = static_cast<std::size_t>(s.task_count);
     w.sequenceLength(n);
     for (std::size_t i = 0; i < n; ++i) w.string(s.names[i]);

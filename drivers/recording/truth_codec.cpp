@@ -8,6 +8,7 @@
 
 #include "drivers/cdr/cdr_reader.h"
 #include "drivers/cdr/cdr_writer.h"
+#include "drivers/recording/stamped_header.h"
 #include "drivers/recording/topics.h"
 
 namespace deepnav {
@@ -17,27 +18,6 @@ using cdr::CdrReader;
 using cdr::CdrWriter;
 
 constexpr int kMaxMapSidePx = 16384;  // a larger map is a corrupt message, not a camera
-
-// builtin_interfaces/Time from t_us (floor division keeps nanosec >= 0), as sample_codec.cpp.
-void writeHeader(CdrWriter& w, TimeUs t_us, Topic topic) {
-  TimeUs sec = t_us / kUsPerS, rem = t_us % kUsPerS;
-  if (rem < 0) {
-    rem += kUsPerS;
-    --sec;
-  }
-  w.i32(static_cast<std::int32_t>(sec));
-  w.u32(static_cast<std::uint32_t>(rem * 1000));
-  w.string(topicInfo(topic).frame_id);
-}
-
-bool readHeader(CdrReader& r, TimeUs* t_us) {
-  std::int32_t sec = 0;
-  std::uint32_t nanosec = 0;
-  std::string frame_id;
-  if (!r.i32(&sec) || !r.u32(&nanosec) || !r.string(&frame_id) || nanosec >= 1000000000u) return false;
-  *t_us = static_cast<TimeUs>(sec) * kUsPerS + static_cast<TimeUs>(nanosec / 1000);
-  return true;
-}
 
 // geometry_msgs/Pose: position then orientation (x, y, z, w).
 void writePose(CdrWriter& w, const Eigen::Vector3d& p, const Eigen::Quaterniond& q) {
@@ -59,7 +39,7 @@ bool readPose(CdrReader& r, Eigen::Vector3d* p, Eigen::Quaterniond* q) {
 
 // sensor_msgs/Image fields before the pixels.
 void writeImageHead(CdrWriter& w, TimeUs t_us, Topic topic, const cv::Mat& m, const char* encoding, int bytes_per_px) {
-  writeHeader(w, t_us, topic);
+  writeStampedHeader(w, t_us, topic);
   w.u32(static_cast<std::uint32_t>(m.rows));
   w.u32(static_cast<std::uint32_t>(m.cols));
   w.string(encoding);
@@ -76,7 +56,7 @@ bool readImageHead(CdrReader& r, const char* encoding, int bytes_per_px, TimeUs*
   std::uint8_t big = 0;
   std::string enc;
   std::size_t count = 0;
-  if (!readHeader(r, t_us) || !r.u32(&h) || !r.u32(&w) || !r.string(&enc) || !r.u8(&big) || !r.u32(&step) ||
+  if (!readStampedHeader(r, t_us) || !r.u32(&h) || !r.u32(&w) || !r.string(&enc) || !r.u8(&big) || !r.u32(&step) ||
       !r.u8SequenceView(pixels, &count))
     return false;
   if (enc != encoding || big != 0 || h == 0 || w == 0 || h > kMaxMapSidePx || w > kMaxMapSidePx) return false;
@@ -113,7 +93,7 @@ bool isFloatMap(const cv::Mat& m) { return !m.empty() && m.type() == CV_32FC1; }
 
 std::size_t encodeFrameTruth(const FrameTruth& t, std::uint8_t* out, std::size_t capacity) {
   return finish(out, capacity, [&](CdrWriter& w) {
-    writeHeader(w, t.t_us, Topic::kFrameTruth);
+    writeStampedHeader(w, t.t_us, Topic::kFrameTruth);
     w.u64(t.sequence);
     writePose(w, t.p_robot_in_odom_m, t.q_odom_robot);
     writePose(w, t.p_left_cam_in_odom_m, t.q_odom_left_cam);
@@ -126,7 +106,7 @@ std::size_t encodeFrameTruth(const FrameTruth& t, std::uint8_t* out, std::size_t
 bool decodeFrameTruth(const std::uint8_t* data, std::size_t size, FrameTruth* t) {
   CdrReader r(data, size);
   std::uint32_t n = 0;
-  if (!readHeader(r, &t->t_us) || !r.u64(&t->sequence) || !readPose(r, &t->p_robot_in_odom_m, &t->q_odom_robot) ||
+  if (!readStampedHeader(r, &t->t_us) || !r.u64(&t->sequence) || !readPose(r, &t->p_robot_in_odom_m, &t->q_odom_robot) ||
       !readPose(r, &t->p_left_cam_in_odom_m, &t->q_odom_left_cam) ||
       !readPose(r, &t->p_right_cam_in_odom_m, &t->q_odom_right_cam) || !r.sequenceLength(&n, 4))
     return false;
