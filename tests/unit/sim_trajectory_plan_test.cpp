@@ -9,6 +9,7 @@
 #include "tools/sim/rotation.h"
 #include "tools/sim/scenario_loader.h"
 #include "tools/sim/trajectory.h"
+#include "sim_test_trajectory.h"
 
 namespace deepnav::sim {
 namespace {
@@ -63,17 +64,7 @@ TEST(SimTrajectoryPlan, HoldsEachWaypointAtItsStandoffDepthAndBearing) {
 
 TEST(SimTrajectoryPlan, VelocityAndAccelerationAreTheDerivativesOfPosition) {
   // Central differences (h = 1e-4 s): the analytic derivatives agree through every move and joint.
-  const Trajectory t = makeTrajectory(scriptedDive());
-  const double h = 1e-4;
-  for (double time = 0.0; time <= 160.0; time += 0.29) {
-    const KinematicState s = t.stateAt(time);
-    const KinematicState before = t.stateAt(time - h), after = t.stateAt(time + h);
-    const Eigen::Vector3d v_numeric = (after.p_robot_in_odom_m - before.p_robot_in_odom_m) / (2 * h);
-    const Eigen::Vector3d a_numeric = (after.v_robot_in_odom_mps - before.v_robot_in_odom_mps) / (2 * h);
-    EXPECT_LT((v_numeric - s.v_robot_in_odom_mps).norm(), 1e-6) << "t = " << time;
-    EXPECT_LT((a_numeric - s.a_robot_in_odom_mps2).norm(), 1e-6) << "t = " << time;
-    EXPECT_NEAR((after.yaw_rad - before.yaw_rad) / (2 * h), s.w_robot_radps.z(), 1e-6) << "t = " << time;
-  }
+  test::expectDerivativesOfPosition(makeTrajectory(scriptedDive()), 160.0, 0.29, true);
 }
 
 TEST(SimTrajectoryPlan, StaysClearOfThePanelWhileGoingAround) {

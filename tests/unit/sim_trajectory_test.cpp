@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "sim_test_trajectory.h"
 #include "tools/sim/rotation.h"
 
 namespace deepnav::sim {
@@ -32,18 +33,8 @@ TEST(SimTrajectory, DefaultPlanLastsTwoMinutes) {
 }
 
 TEST(SimTrajectory, VelocityAndAccelerationAreTheDerivativesOfPosition) {
-  // GIVEN the default dive WHEN differentiating the position numerically (central, h = 1e-4 s, error
-  // ~h^2 * jerk < 1e-8) THEN the analytic velocity and acceleration agree everywhere, joints included.
-  const Trajectory t = makeTrajectory();
-  const double h = 1e-4;
-  for (double time = 0.0; time <= 125.0; time += 0.37) {
-    const KinematicState s = t.stateAt(time);
-    const KinematicState before = t.stateAt(time - h), after = t.stateAt(time + h);
-    const Eigen::Vector3d v_numeric = (after.p_robot_in_odom_m - before.p_robot_in_odom_m) / (2 * h);
-    const Eigen::Vector3d a_numeric = (after.v_robot_in_odom_mps - before.v_robot_in_odom_mps) / (2 * h);
-    EXPECT_LT((v_numeric - s.v_robot_in_odom_mps).norm(), 1e-6) << "t = " << time;
-    EXPECT_LT((a_numeric - s.a_robot_in_odom_mps2).norm(), 1e-6) << "t = " << time;
-  }
+  // GIVEN the default dive WHEN differentiating numerically THEN the analytic derivatives agree everywhere
+  test::expectDerivativesOfPosition(makeTrajectory(), 125.0, 0.37, false);
 }
 
 TEST(SimTrajectory, AngularRateIsTheDerivativeOfOrientation) {
