@@ -28,15 +28,7 @@ class Ros1BagWriter {
 
   // The bag header's name of a compression ("none", "bz2", "lz4").
   static std::string compressionName(Compression c) {
-    switch (c) {
-      case Compression::kBz2:
-        return "bz2";
-      case Compression::kLz4:
-        return "lz4";
-      case Compression::kNone:
-        break;
-    }
-    return "none";
+    return c == Compression::kBz2 ? "bz2" : c == Compression::kLz4 ? "lz4" : "none";
   }
 
   bool open(const std::string& path, Compression compression = Compression::kNone,
