@@ -50,16 +50,17 @@ cv::Mat makeImage() {
   return image;
 }
 
-deepnav::MarkerDetector makeDetector() {
+deepnav::MarkerDetector makeDetector(bool coarse_search = false) {
   deepnav::MarkerDetectorConfig config;
   config.camera = kCamera;
+  config.coarse_search = coarse_search;
   deepnav::MarkerDetector detector;
   detector.init(config, nullptr);
   return detector;
 }
 
-void runDetect(benchmark::State& state, const cv::Mat& image) {
-  deepnav::MarkerDetector detector = makeDetector();
+void runDetect(benchmark::State& state, const cv::Mat& image, bool coarse_search = false) {
+  deepnav::MarkerDetector detector = makeDetector(coarse_search);
   MarkerObservations out;
   for (auto _ : state) {
     detector.detect(image, &out);
@@ -75,6 +76,15 @@ void BM_MarkersDetectAndPoseGrey688x516OneThread(benchmark::State& state) {
   const int threads = cv::getNumThreads();
   cv::setNumThreads(0);
   runDetect(state, makeImage());
+  cv::setNumThreads(threads);
+}
+
+// The same, coarse-to-fine (vision.markers_coarse_search): quads at half resolution, the full-resolution
+// detector only around them.
+void BM_MarkersCoarseDetectAndPoseGrey688x516OneThread(benchmark::State& state) {
+  const int threads = cv::getNumThreads();
+  cv::setNumThreads(0);
+  runDetect(state, makeImage(), true);
   cv::setNumThreads(threads);
 }
 
@@ -139,6 +149,7 @@ void BM_MarkersPanelPoseAdd(benchmark::State& state) {
 
 BENCHMARK(BM_MarkersDetectAndPoseGrey688x516)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_MarkersDetectAndPoseGrey688x516OneThread)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_MarkersCoarseDetectAndPoseGrey688x516OneThread)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_MarkersDetectAndPoseBgr688x516)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_MarkersSquarePose)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_MarkersPoseMeasurement)->Unit(benchmark::kMicrosecond);

@@ -1,5 +1,6 @@
 #include "vision/markers/marker_detector.h"
 
+#include <algorithm>
 #include <cmath>
 #include <opencv2/imgproc.hpp>
 
@@ -36,6 +37,12 @@ bool validateMarkerDetectorConfig(const MarkerDetectorConfig& c, std::string* er
     return fail(error, "ambiguity.corner_sigma_px: must be > 0");
   if (!(c.ambiguity.ambiguity_chi2 >= 0.0))
     return fail(error, "ambiguity.ambiguity_chi2: must be >= 0");
+  if (c.coarse.margin_px < 0 || c.coarse.margin_px > 200)
+    return fail(error, "coarse.margin_px: must be in [0, 200]");
+  if (!(c.coarse.margin_sides >= 0.0 && c.coarse.margin_sides <= 4.0))
+    return fail(error, "coarse.margin_sides: must be in [0, 4]");
+  if (c.coarse.threshold_window_max_px < 3 || c.coarse.threshold_window_max_px > 23)
+    return fail(error, "coarse.threshold_window_max_px: must be in [3, 23]");
   return true;
 }
 
@@ -50,6 +57,9 @@ bool MarkerDetector::init(const MarkerDetectorConfig& config, std::string* error
   params_->cornerRefinementMethod =
       cv::aruco::CORNER_REFINE_NONE;  // refined per marker in detect()
   cells_across_ = dictionary_->markerSize + 2 * params_->markerBorderBits;
+  region_params_ = cv::aruco::DetectorParameters::create();
+  region_params_->cornerRefinementMethod = cv::aruco::CORNER_REFINE_NONE;
+  if (config.coarse_search) coarse_.init(dictionary_, config.coarse);
   corners_.reserve(MarkerObservations::kCapacity * 2);
   ids_.reserve(MarkerObservations::kCapacity * 2);
   initialised_ = true;
@@ -68,7 +78,11 @@ bool MarkerDetector::detect(const cv::Mat& grey_or_bgr, MarkerObservations* out)
   }
   corners_.clear();
   ids_.clear();
-  cv::aruco::detectMarkers(*grey, dictionary_, corners_, ids_, params_);
+  if (config_.coarse_search) {
+    detectInRegions(*grey);
+  } else {
+    cv::aruco::detectMarkers(*grey, dictionary_, corners_, ids_, params_);
+  }
   for (size_t i = 0; i < ids_.size(); ++i) {
     if (out->count == MarkerObservations::kCapacity) {
       ++out->dropped;
@@ -92,6 +106,28 @@ bool MarkerDetector::detect(const cv::Mat& grey_or_bgr, MarkerObservations* out)
     ++out->count;
   }
   return true;
+}
+
+// The whole-image detector's perimeter limits are fractions of the image's larger side (OpenCV 4.6
+// truncates rate x side to whole px); in a rectangle they are set so that they come to the same px.
+void MarkerDetector::detectInRegions(const cv::Mat& grey) {
+  coarse_.find(grey, &regions_);
+  const double side_px = std::max(grey.cols, grey.rows);
+  const double min_perimeter_px = std::floor(params_->minMarkerPerimeterRate * side_px) + 0.5;
+  const double max_perimeter_px = std::floor(params_->maxMarkerPerimeterRate * side_px) + 0.5;
+  for (const cv::Rect& r : regions_) {
+    const double region_side_px = std::max(r.width, r.height);
+    region_params_->minMarkerPerimeterRate = min_perimeter_px / region_side_px;
+    region_params_->maxMarkerPerimeterRate = max_perimeter_px / region_side_px;
+    region_corners_.clear();
+    region_ids_.clear();
+    cv::aruco::detectMarkers(grey(r), dictionary_, region_corners_, region_ids_, region_params_);
+    for (std::size_t i = 0; i < region_ids_.size(); ++i) {
+      for (cv::Point2f& p : region_corners_[i]) p += cv::Point2f(static_cast<float>(r.x), static_cast<float>(r.y));
+      corners_.push_back(region_corners_[i]);
+      ids_.push_back(region_ids_[i]);
+    }
+  }
 }
 
 }  // namespace deepnav

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "base/marker_observation.h"
+#include "vision/markers/coarse_marker_regions.h"
 #include "vision/markers/marker_corner_refinement.h"
 #include "vision/markers/pinhole_intrinsics.h"
 #include "vision/markers/square_marker_pose.h"
@@ -19,6 +20,13 @@ struct MarkerDetectorConfig {
   CornerRefinementConfig
       corner_refinement;            // subpixel corners, always on (window sized to the cells)
   MarkerAmbiguityConfig ambiguity;  // when both IPPE solutions are flagged ambiguous
+  // Coarse-to-fine search (off: the whole image at full resolution, as always): quads found at half
+  // resolution, then the full-resolution detector only in rectangles around them
+  // (coarse_marker_regions.h). The markers it finds have the same corners as the whole-image search;
+  // it misses some that only the full resolution shows as quads (small and far). Board key
+  // vision.markers_coarse_search.
+  bool coarse_search = false;
+  CoarseRegionConfig coarse;
 };
 
 // False with a message naming the key when a field is out of range or the dictionary unknown.
@@ -44,9 +52,16 @@ class MarkerDetector {
   const MarkerDetectorConfig& config() const { return config_; }
 
  private:
+  void detectInRegions(const cv::Mat& grey);
+
   MarkerDetectorConfig config_;
   cv::Ptr<cv::aruco::Dictionary> dictionary_;
   cv::Ptr<cv::aruco::DetectorParameters> params_;
+  cv::Ptr<cv::aruco::DetectorParameters> region_params_;  // coarse_search: in one rectangle
+  CoarseMarkerRegions coarse_;
+  std::vector<cv::Rect> regions_;
+  std::vector<std::vector<cv::Point2f>> region_corners_;
+  std::vector<int> region_ids_;
   int cells_across_ = 6;  // bits of the dictionary + 2 border cells
   cv::Mat grey_;
   std::vector<std::vector<cv::Point2f>> corners_;

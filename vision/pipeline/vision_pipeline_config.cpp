@@ -36,6 +36,11 @@ const std::array kVisionParams = {
       "99.9 %), its inliers are re-selected around the prediction (coherently drifting marine snow falls outside); "
       "the pose and covariance still come from the images (vision/orbvo/motion_prior.h)",
       DEEPNAV_PARAM_FIELD(VisionPipelineConfig, orb.motion_prior.enabled)},
+    D{"markers_coarse_search", ParamType::kBool, "-", 0, 0, "",
+      "marker detection searches a half-resolution image for quads and runs the full-resolution detector only "
+      "around them: about 4x less CPU on dive frames, same corners, but misses some small far markers "
+      "(vision/markers/coarse_marker_regions.h)",
+      DEEPNAV_PARAM_FIELD(VisionPipelineConfig, markers.coarse_search)},
     D{"dense_method", ParamType::kEnum, "-", 0, 0, kDenseStereoMethods,
       "dense stereo of the workspace map and the plane VO",
       DEEPNAV_PARAM_ENUM_FIELD(VisionPipelineConfig, dense.method)},
