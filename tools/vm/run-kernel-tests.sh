@@ -72,26 +72,9 @@ for applet in sh mount umount insmod mkdir chroot poweroff echo cat sleep; do
   ln -s busybox "$ird/bin/$applet"
 done
 
-# Dependency closure of the boot modules, in load order (dependencies first).
-declare -A seen=()
-order=()
-add_module() {
-  local name="$1" dep
-  [ -n "${seen[$name]:-}" ] && return 0
-  seen[$name]=1
-  for dep in $(modinfo -k "$kver" -F depends "$name" | tr ',' ' '); do
-    add_module "$dep"
-  done
-  order+=("$name")
-}
-for m in virtio_pci 9pnet_virtio 9p; do add_module "$m"; done
-: >"$ird/modules/order"
-for m in "${order[@]}"; do
-  f="$(modinfo -k "$kver" -F filename "$m")"
-  if [ "$f" = "(builtin)" ] || [ -z "$f" ]; then continue; fi
-  cp "$f" "$ird/modules/"
-  basename "$f" >>"$ird/modules/order"
-done
+# The boot modules and their dependencies, in load order (dependencies first).
+source "$root/tools/vm/boot_modules.sh"
+copy_boot_modules "$kver" "$ird" virtio_pci 9pnet_virtio 9p
 
 # The commands run inside the VM, in the host's root (chroot). A skipped test counts as a failure:
 # in the VM the kernel drivers must be there.

@@ -240,23 +240,8 @@ rm -rf "$ird"
 mkdir -p "$ird"/{bin,dev,proc,sys,newroot,modules}
 cp /bin/busybox "$ird/bin/busybox"
 for applet in sh mount umount insmod sleep switch_root echo cat; do ln -s busybox "$ird/bin/$applet"; done
-declare -A seen=()
-order=()
-add_module() {
-  local name="$1" dep
-  [ -n "${seen[$name]:-}" ] && return 0
-  seen[$name]=1
-  for dep in $(modinfo -k "$kver" -F depends "$name" | tr ',' ' '); do add_module "$dep"; done
-  order+=("$name")
-}
-for m in virtio_pci virtio_blk crc32c_generic ext4; do add_module "$m"; done
-: >"$ird/modules/order"
-for m in "${order[@]}"; do
-  f="$(modinfo -k "$kver" -F filename "$m")"
-  if [ "$f" = "(builtin)" ] || [ -z "$f" ]; then continue; fi
-  cp "$f" "$ird/modules/"
-  basename "$f" >>"$ird/modules/order"
-done
+source "$root/tools/vm/boot_modules.sh"
+copy_boot_modules "$kver" "$ird" virtio_pci virtio_blk crc32c_generic ext4
 cat >"$ird/init" <<'EOF'
 #!/bin/sh
 mount -t proc proc /proc
