@@ -3,7 +3,8 @@
 EKF's costs, replay speed against real time and peak resident memory.
 
   tools/bench/bench_table.py [--build build] [--recording out-default/default.mcap]
-                             [--sea-recording DIVE.mcap | --sea-duration S] [--out bench.md]
+                             [--sea-recording DIVE.mcap | --sea-duration S] [--set KEY=VALUE ...]
+                             [--out bench.md]
 
 Runs the Google Benchmark binaries of build/bin (CPU time, one thread), then `deepnav replay` of a
 recording (default: a 30 s simulated dive it writes with deepnav-sim) for the speed against real time and
@@ -11,8 +12,9 @@ the peak resident memory of the whole replay (vision worker included). Then the 
 stereo pair, per part, from the frames.csv of that replay and of a murky sea-trial dive
 (tools/sim/scenarios/sea-trial-murky.yaml simulated with board/sim-sea/board.yaml, seed 3, replayed with
 that board; default: the whole 300 s dive): mean, median, p95, p99 and max per part, against the targets
-of issue 20 (mean <= 20 ms, p99 <= 50 ms per pair). Prints Markdown; docs/benchmarks.md shows the latest
-table with the machine it ran on."""
+of issue 20 (mean <= 20 ms, p99 <= 50 ms per pair). --set passes board overrides to both replays (e.g.
+vision.markers_coarse_search=true). Prints Markdown; docs/benchmarks.md shows the latest table with the
+machine it ran on. The simulated dives and replays live in a temporary directory removed at the end."""
 import argparse
 import csv
 import json
@@ -23,6 +25,7 @@ import re
 import statistics
 import resource
 import subprocess
+import shutil
 import tempfile
 
 # (binary, benchmark name, row label, target, paper figure)
@@ -85,9 +88,14 @@ def human(seconds):
     return f"{seconds * 1e6:.2f} us"
 
 
-def replay_figures(bin_dir, recording):
+def overrides(sets):
+    """deepnav replay's --set arguments."""
+    return [arg for kv in sets for arg in ("--set", kv)]
+
+
+def replay_figures(bin_dir, recording, work, sets):
     """(dive_s, wall_s, peak MiB, replay output directory) of the replay of the default dive."""
-    work = tempfile.mkdtemp(prefix="deepnav_bench_")
+    os.makedirs(work, exist_ok=True)
     if not recording:
         recording = os.path.join(work, "dive.mcap")
         scenario = os.path.join(work, "short.yaml")
@@ -98,18 +106,18 @@ def replay_figures(bin_dir, recording):
         subprocess.run([os.path.join(bin_dir, "deepnav-sim"), "--scenario", scenario, "--out", recording],
                        check=True, capture_output=True)
     before = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
-    subprocess.run([os.path.join(bin_dir, "deepnav"), "replay", recording, "--out", os.path.join(work, "replay")],
-                   check=True, capture_output=True)
+    subprocess.run([os.path.join(bin_dir, "deepnav"), "replay", recording, "--out", os.path.join(work, "replay")]
+                   + overrides(sets), check=True, capture_output=True)
     peak_kib = max(before, resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)
     with open(os.path.join(work, "replay", "summary.json")) as f:
         s = json.load(f)
     return s["dive_s"], s["wall_s"], peak_kib / 1024.0, os.path.join(work, "replay")
 
 
-def sea_replay(bin_dir, recording, duration_s):
+def sea_replay(bin_dir, recording, duration_s, work, sets):
     """Replays the murky sea-trial dive (simulating it first when no recording is given); returns the
     replay's output directory."""
-    work = tempfile.mkdtemp(prefix="deepnav_bench_sea_")
+    os.makedirs(work, exist_ok=True)
     board = "board/sim-sea/board.yaml"
     if not recording:
         recording = os.path.join(work, "sea.mcap")
@@ -123,8 +131,8 @@ def sea_replay(bin_dir, recording, duration_s):
         subprocess.run([os.path.join(bin_dir, "deepnav-sim"), "--scenario", scenario, "--board", board,
                         "--seed", "3", "--no-truth-maps", "--out", recording], check=True, capture_output=True)
     out = os.path.join(work, "replay")
-    subprocess.run([os.path.join(bin_dir, "deepnav"), "replay", recording, "--board", board, "--out", out],
-                   check=True, capture_output=True)
+    subprocess.run([os.path.join(bin_dir, "deepnav"), "replay", recording, "--board", board, "--out", out]
+                   + overrides(sets), check=True, capture_output=True)
     return out
 
 
@@ -185,8 +193,18 @@ def main():
     ap.add_argument("--recording", help="recording to replay (default: a 30 s simulated dive)")
     ap.add_argument("--sea-recording", help="murky sea-trial recording to replay (default: simulate one)")
     ap.add_argument("--sea-duration", type=float, help="simulate only this many seconds of the sea-trial dive")
+    ap.add_argument("--set", action="append", default=[], metavar="KEY=VALUE",
+                    help="board override for both replays (repeatable)")
     ap.add_argument("--out", help="also write the Markdown here")
     args = ap.parse_args()
+    work = tempfile.mkdtemp(prefix="deepnav_bench_")
+    try:
+        write_table(args, work)
+    finally:
+        shutil.rmtree(work, ignore_errors=True)
+
+
+def write_table(args, work):
     bin_dir = os.path.join(args.build, "bin")
     results = run_benchmarks(bin_dir)
     lines = [f"Machine: {platform.machine()}, {os.cpu_count()} cores, {platform.platform()}", "",
@@ -196,11 +214,14 @@ def main():
         if peer:
             paper = f"{peer[0][0]} {human(peer[0][1])}" + (f": ours {t / peer[0][1]:.2f}x its time" if t else "")
         lines.append(f"| {label} | {human(t) if t is not None else 'not run'} | {target} | {paper} |")
-    dive_s, wall_s, peak_mib, default_out = replay_figures(bin_dir, args.recording)
+    if args.set:
+        lines += ["", "Replays with " + ", ".join(f"`{kv}`" for kv in args.set) + "."]
+    dive_s, wall_s, peak_mib, default_out = replay_figures(bin_dir, args.recording, os.path.join(work, "default"),
+                                                           args.set)
     lines += ["", "| replay (full two-stage pipeline) | value |", "|---|---|",
               f"| dive replayed | {dive_s:.1f} s in {wall_s:.1f} s wall ({dive_s / wall_s:.2f}x real time) |",
               f"| peak resident memory of the replay | {peak_mib:.0f} MiB |"]
-    sea_out = sea_replay(bin_dir, args.sea_recording, args.sea_duration)
+    sea_out = sea_replay(bin_dir, args.sea_recording, args.sea_duration, os.path.join(work, "sea"), args.set)
     dives = [("default dive", worker_times(os.path.join(default_out, "frames.csv"))),
              ("murky sea trial", worker_times(os.path.join(sea_out, "frames.csv")))]
     lines += ["", "| vision worker, per stereo pair | part | pairs | mean | median | p95 | p99 | max |",
