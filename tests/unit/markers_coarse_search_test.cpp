@@ -101,7 +101,7 @@ TEST(MarkersCoarseSearch, RegionsAreDisjointAndHoldEveryMarker) {
   regions.init(cv::aruco::getPredefinedDictionary(cv::aruco::DICT_4X4_50), CoarseRegionConfig{});
   std::vector<cv::Rect> rects;
   // WHEN the coarse search runs
-  regions.find(image, &rects);
+  regions.find(image, {}, &rects);
   // THEN no two rectangles overlap, each is inside the image, and each marker's corners lie in one
   for (std::size_t i = 0; i < rects.size(); ++i) {
     EXPECT_EQ(rects[i] & cv::Rect(0, 0, image.cols, image.rows), rects[i]);
@@ -139,6 +139,29 @@ TEST(MarkersCoarseSearch, InitRejectsBadCoarseConfigNamingTheKey) {
   MarkerDetector detector;
   EXPECT_FALSE(detector.init(c, &error));
   EXPECT_NE(error.find("coarse.threshold_window_max_px"), std::string::npos) << error;
+}
+
+TEST(MarkersCoarseSearch, AFarMarkerIsFoundByThePeriodicWholeImageSearchThenTracked) {
+  // GIVEN a marker 6 m away, turned 40 deg: too small for a quad at half resolution
+  const cv::Mat image = texturedScene({markerAt(7, {0.1, 0.05, 6.0}, 40.0)}, 5);
+  MarkerDetector whole, coarse;
+  ASSERT_TRUE(whole.init(detectorConfig(false), nullptr));
+  ASSERT_TRUE(coarse.init(detectorConfig(true), nullptr));
+  MarkerObservations reference;
+  ASSERT_TRUE(whole.detect(image, &reference));
+  ASSERT_EQ(reference.count, 1);
+  const int every = CoarseRegionConfig{}.full_search_every_pairs;
+  // WHEN the same view comes pair after pair
+  for (int pair = 1; pair <= every + 3; ++pair) {
+    MarkerObservations out;
+    ASSERT_TRUE(coarse.detect(image, &out));
+    // THEN the coarse search misses it until the whole image is searched (pair `every`), and from then on
+    // the previous pair's marker is searched again at full resolution: found, with the same corners
+    ASSERT_EQ(out.count, pair < every ? 0 : 1) << "pair " << pair;
+    if (out.count == 1) {
+      for (int k = 0; k < 4; ++k) EXPECT_EQ(out.items[0].corners_px[k], reference.items[0].corners_px[k]);
+    }
+  }
 }
 
 }  // namespace

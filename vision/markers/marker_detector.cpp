@@ -43,6 +43,10 @@ bool validateMarkerDetectorConfig(const MarkerDetectorConfig& c, std::string* er
     return fail(error, "coarse.margin_sides: must be in [0, 4]");
   if (c.coarse.threshold_window_max_px < 3 || c.coarse.threshold_window_max_px > 23)
     return fail(error, "coarse.threshold_window_max_px: must be in [3, 23]");
+  if (c.coarse.track_margin_px < 0 || c.coarse.track_margin_px > 200)
+    return fail(error, "coarse.track_margin_px: must be in [0, 200]");
+  if (c.coarse.full_search_every_pairs < 1 || c.coarse.full_search_every_pairs > 1000)
+    return fail(error, "coarse.full_search_every_pairs: must be in [1, 1000]");
   return true;
 }
 
@@ -60,6 +64,8 @@ bool MarkerDetector::init(const MarkerDetectorConfig& config, std::string* error
   region_params_ = cv::aruco::DetectorParameters::create();
   region_params_->cornerRefinementMethod = cv::aruco::CORNER_REFINE_NONE;
   if (config.coarse_search) coarse_.init(dictionary_, config.coarse);
+  tracked_.clear();
+  untracked_pairs_ = 0;
   corners_.reserve(MarkerObservations::kCapacity * 2);
   ids_.reserve(MarkerObservations::kCapacity * 2);
   initialised_ = true;
@@ -79,7 +85,7 @@ bool MarkerDetector::detect(const cv::Mat& grey_or_bgr, MarkerObservations* out)
   corners_.clear();
   ids_.clear();
   if (config_.coarse_search) {
-    detectInRegions(*grey);
+    detectCoarseToFine(*grey);
   } else {
     cv::aruco::detectMarkers(*grey, dictionary_, corners_, ids_, params_);
   }
@@ -108,10 +114,24 @@ bool MarkerDetector::detect(const cv::Mat& grey_or_bgr, MarkerObservations* out)
   return true;
 }
 
+// While markers are tracked: the coarse regions and the previous pair's markers. While none is: the
+// coarse regions, and every full_search_every_pairs-th pair the whole image (a marker first seen far
+// away is too small to be a quad at half resolution).
+void MarkerDetector::detectCoarseToFine(const cv::Mat& grey) {
+  if (tracked_.empty() && ++untracked_pairs_ >= config_.coarse.full_search_every_pairs) {
+    untracked_pairs_ = 0;
+    cv::aruco::detectMarkers(grey, dictionary_, corners_, ids_, params_);
+  } else {
+    detectInRegions(grey);
+  }
+  if (!corners_.empty()) untracked_pairs_ = 0;
+  tracked_.assign(corners_.begin(), corners_.end());
+}
+
 // The whole-image detector's perimeter limits are fractions of the image's larger side (OpenCV 4.6
 // truncates rate x side to whole px); in a rectangle they are set so that they come to the same px.
 void MarkerDetector::detectInRegions(const cv::Mat& grey) {
-  coarse_.find(grey, &regions_);
+  coarse_.find(grey, tracked_, &regions_);
   const double side_px = std::max(grey.cols, grey.rows);
   const double min_perimeter_px = std::floor(params_->minMarkerPerimeterRate * side_px) + 0.5;
   const double max_perimeter_px = std::floor(params_->maxMarkerPerimeterRate * side_px) + 0.5;

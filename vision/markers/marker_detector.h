@@ -52,6 +52,7 @@ class MarkerDetector {
   const MarkerDetectorConfig& config() const { return config_; }
 
  private:
+  void detectCoarseToFine(const cv::Mat& grey);
   void detectInRegions(const cv::Mat& grey);
 
   MarkerDetectorConfig config_;
@@ -62,6 +63,8 @@ class MarkerDetector {
   std::vector<cv::Rect> regions_;
   std::vector<std::vector<cv::Point2f>> region_corners_;
   std::vector<int> region_ids_;
+  std::vector<std::vector<cv::Point2f>> tracked_;  // coarse_search: the previous pair's markers (full px)
+  int untracked_pairs_ = 0;                         // coarse_search: pairs since the last full search
   int cells_across_ = 6;  // bits of the dictionary + 2 border cells
   cv::Mat grey_;
   std::vector<std::vector<cv::Point2f>> corners_;
