@@ -96,4 +96,13 @@ bool drawSyntheticMarker(const std::string& dictionary, const SyntheticMarker& m
   return true;
 }
 
+void addGaussianNoise(double sigma, cv::RNG* rng, cv::Mat* image) {
+  cv::Mat noise(image->size(), CV_16SC1);
+  rng->fill(noise, cv::RNG::NORMAL, 0.0, sigma);
+  cv::Mat noisy;
+  image->convertTo(noisy, CV_16SC1);
+  noisy += noise;
+  noisy.convertTo(*image, CV_8UC1);
+}
+
 }  // namespace deepnav

@@ -28,6 +28,10 @@ struct SyntheticMarker {
 bool drawSyntheticMarker(const std::string& dictionary, const SyntheticMarker& marker,
                          const PinholeIntrinsics& camera, int supersample, cv::Mat* image);
 
+// Adds zero-mean Gaussian noise of sigma grey levels (drawn from rng) to a CV_8UC1 image, saturating at
+// 0 and 255: the sensor noise of the marker tests and benchmarks.
+void addGaussianNoise(double sigma, cv::RNG* rng, cv::Mat* image);
+
 // The exact image of corner k (ArUco order) of the marker: where a perfect detector finds it.
 Eigen::Vector2d projectMarkerCorner(const SyntheticMarker& marker, const PinholeIntrinsics& camera,
                                     int k);

@@ -97,11 +97,8 @@ TEST(MarkersAmbiguity, FarNearlyHeadOnMarkersAreResolvedByThePrediction) {
     cv::Mat image(516, 688, CV_8UC1, cv::Scalar(110));
     ASSERT_TRUE(drawSyntheticMarker("DICT_4X4_50", m, config.camera, 4, &image));
     cv::GaussianBlur(image, image, cv::Size(5, 5), 0.6);
-    cv::Mat noise(image.size(), CV_16SC1), noisy;
-    cv::RNG(seed).fill(noise, cv::RNG::NORMAL, 0.0, 3.0);
-    image.convertTo(noisy, CV_16SC1);
-    noisy += noise;
-    noisy.convertTo(image, CV_8UC1);
+    cv::RNG rng(seed);
+    addGaussianNoise(3.0, &rng, &image);
     MarkerObservations out;
     ASSERT_TRUE(detector.detect(image, &out));
     ASSERT_EQ(out.count, 1);

@@ -47,12 +47,7 @@ cv::Mat texturedScene(const std::vector<SyntheticMarker>& markers, std::uint64_t
   cv::GaussianBlur(image, image, cv::Size(7, 7), 1.5);
   for (const auto& m : markers) EXPECT_TRUE(drawSyntheticMarker("DICT_4X4_50", m, camera(), 4, &image));
   cv::GaussianBlur(image, image, cv::Size(5, 5), 0.6);
-  cv::Mat noise(image.size(), CV_16SC1);
-  rng.fill(noise, cv::RNG::NORMAL, 0.0, 3.0);
-  cv::Mat noisy;
-  image.convertTo(noisy, CV_16SC1);
-  noisy += noise;
-  noisy.convertTo(image, CV_8UC1);
+  addGaussianNoise(3.0, &rng, &image);
   return image;
 }
 

@@ -60,13 +60,8 @@ cv::Mat renderScene(const SyntheticMarker* markers, int n, double noise_sigma = 
   for (int i = 0; i < n; ++i)
     EXPECT_TRUE(drawSyntheticMarker("DICT_4X4_50", markers[i], camera(), 4, &image));
   cv::GaussianBlur(image, image, cv::Size(5, 5), 0.6);
-  cv::Mat noise(image.size(), CV_16SC1);
   cv::RNG rng(seed);
-  rng.fill(noise, cv::RNG::NORMAL, 0.0, noise_sigma);
-  cv::Mat noisy;
-  image.convertTo(noisy, CV_16SC1);
-  noisy += noise;
-  noisy.convertTo(image, CV_8UC1);
+  addGaussianNoise(noise_sigma, &rng, &image);
   return image;
 }
 

@@ -41,12 +41,7 @@ cv::Mat makeImage() {
       marker(22, {-0.45, 0.3, 1.8}, 30.0), marker(33, {0.45, 0.3, 1.6}, -35.0)};
   for (const auto& m : markers) deepnav::drawSyntheticMarker("DICT_4X4_50", m, kCamera, 4, &image);
   cv::GaussianBlur(image, image, cv::Size(5, 5), 0.6);
-  cv::Mat noise(image.size(), CV_16SC1);
-  rng.fill(noise, cv::RNG::NORMAL, 0.0, 2.0);
-  cv::Mat noisy;
-  image.convertTo(noisy, CV_16SC1);
-  noisy += noise;
-  noisy.convertTo(image, CV_8UC1);
+  deepnav::addGaussianNoise(2.0, &rng, &image);
   return image;
 }
 
