@@ -5,6 +5,7 @@
 #include <climits>
 #include <cmath>
 #include <cstdint>
+#include <opencv2/core/hal/intrin.hpp>
 
 #include "vision/stereo/sad16.h"
 
@@ -34,85 +35,151 @@ int floorToInt(float x) {
 
 }  // namespace
 
-bool ElasDenseMatcher::allocate(const ElasParams& params) {
+bool ElasDenseMatcher::allocate(const ElasParams& params, int width_px) {
   if (params.beta <= 0.0f || params.gamma <= 0.0f || params.sigma_px <= 0.0f ||
-      params.sradius_px < 0 || params.num_disparities > 64 * ElasCandidates::kWords) {
+      params.sradius_px < 0 || params.num_disparities > 64 * ElasCandidates::kWords || width_px < 1) {
     return false;
   }
   params_ = params;
-  prior_bonus_.resize(static_cast<std::size_t>(params.sradius_px) * kPriorSteps + 1);
-  for (std::size_t k = 0; k < prior_bonus_.size(); ++k) {
+  width_px_ = width_px;
+  zero_bonus_index_ = params.sradius_px * kPriorSteps + 1;
+  prior_bonus_.assign(static_cast<std::size_t>(zero_bonus_index_) + 1, 0);
+  for (int k = 0; k < zero_bonus_index_; ++k) {
     const double x = static_cast<double>(k) / kPriorSteps;
     const double gauss = std::exp(-x * x / (2.0 * params.sigma_px * params.sigma_px));
     prior_bonus_[k] =
         static_cast<int>(std::lround(-std::log1p(gauss / params.gamma) / params.beta));
   }
+  band_slots_ = 2 * params.sradius_px + 1;
+  band_lo_.assign(static_cast<std::size_t>(width_px), 1);
+  band_hi_.assign(static_cast<std::size_t>(width_px), 0);
+  bonus_index_.assign(static_cast<std::size_t>(band_slots_) * width_px, zero_bonus_index_);
   return true;
 }
 
 int ElasDenseMatcher::priorBonus(int d, float mu) const {
+  if (mu < 0.0f) return 0;
+  return prior_bonus_[bonusIndex(d, mu)];
+}
+
+int ElasDenseMatcher::bonusIndex(int d, float mu) const {
   const float x = std::fabs(static_cast<float>(d) - mu);
-  if (mu < 0.0f || x > static_cast<float>(params_.sradius_px)) return 0;
-  return prior_bonus_[static_cast<int>(x * kPriorSteps + 0.5f)];
+  if (x > static_cast<float>(params_.sradius_px)) return zero_bonus_index_;
+  return static_cast<int>(x * kPriorSteps + 0.5f);
+}
+
+// Scalar reference of the vector loop below, also its tail.
+void ElasDenseMatcher::prepareRange(const float* mean_row, bool view_right, int width, int u_begin,
+                                    int u_end) {
+  const float sradius = static_cast<float>(params_.sradius_px);
+  for (int u = u_begin; u < u_end; ++u) {
+    const float mu = mean_row[u];
+    const int d_last = std::min(params_.num_disparities - 1, view_right ? width - 1 - u : u);
+    band_lo_[u] = mu >= 0.0f ? std::max(0, ceilToInt(mu - sradius)) : 1;
+    band_hi_[u] = mu >= 0.0f ? std::min(d_last, floorToInt(mu + sradius)) : 0;
+    for (int k = 0; k < band_slots_; ++k) {
+      bonus_index_[static_cast<std::size_t>(k) * width + u] = bonusIndex(band_lo_[u] + k, mu);
+    }
+  }
+}
+
+void ElasDenseMatcher::prepareRow(const float* mean_row, bool view_right, int width) {
+  int u = 0;
+#if CV_SIMD128
+  const cv::v_float32x4 sradius = cv::v_setall_f32(static_cast<float>(params_.sradius_px));
+  const cv::v_float32x4 zero_f = cv::v_setzero_f32();
+  const cv::v_float32x4 steps = cv::v_setall_f32(static_cast<float>(kPriorSteps));
+  const cv::v_float32x4 half = cv::v_setall_f32(0.5f);
+  const cv::v_int32x4 lane(0, 1, 2, 3);
+  const cv::v_int32x4 last_d = cv::v_setall_s32(params_.num_disparities - 1);
+  const cv::v_int32x4 zero_index = cv::v_setall_s32(zero_bonus_index_);
+  const auto asInt = [](const cv::v_float32x4& mask) { return cv::v_reinterpret_as_s32(mask); };
+  for (; u + 4 <= width; u += 4) {
+    const cv::v_float32x4 mu = cv::v_load(mean_row + u);
+    const cv::v_int32x4 uu = cv::v_setall_s32(u) + lane;
+    const cv::v_int32x4 d_last = cv::v_min(last_d, view_right ? cv::v_setall_s32(width - 1) - uu : uu);
+    // ceilToInt / floorToInt: truncation, then -1 (all bits of a true mask) corrects it
+    const cv::v_float32x4 lo_f = mu - sradius, hi_f = mu + sradius;
+    const cv::v_int32x4 lo_t = cv::v_trunc(lo_f), hi_t = cv::v_trunc(hi_f);
+    const cv::v_int32x4 lo = cv::v_max(cv::v_setzero_s32(), lo_t - asInt(cv::v_cvt_f32(lo_t) < lo_f));
+    const cv::v_int32x4 hi = cv::v_min(d_last, hi_t + asInt(cv::v_cvt_f32(hi_t) > hi_f));
+    const cv::v_int32x4 has_prior = asInt(mu >= zero_f);
+    const cv::v_int32x4 band_lo = cv::v_select(has_prior, lo, cv::v_setall_s32(1));
+    cv::v_store(band_lo_.data() + u, band_lo);
+    cv::v_store(band_hi_.data() + u, cv::v_select(has_prior, hi, cv::v_setzero_s32()));
+    for (int k = 0; k < band_slots_; ++k) {
+      const cv::v_float32x4 x = cv::v_abs(cv::v_cvt_f32(band_lo + cv::v_setall_s32(k)) - mu);
+      const cv::v_int32x4 index = cv::v_trunc(x * steps + half);
+      cv::v_store(bonus_index_.data() + static_cast<std::size_t>(k) * width + u,
+                  cv::v_select(asInt(x > sradius), zero_index, index));
+    }
+  }
+#endif
+  prepareRange(mean_row, view_right, width, u, width);
 }
 
 void ElasDenseMatcher::match(const ElasDescriptorImage& ref, const ElasDescriptorImage& other,
                              bool view_right, const cv::Mat& mean_px,
                              const ElasCandidates& candidates, cv::Mat* disparity_px,
-                             cv::Mat* subpixel_px) const {
+                             cv::Mat* subpixel_px) {
   for (int v = 0; v < ref.height(); ++v) {
+    prepareRow(mean_px.ptr<float>(v), view_right, ref.width());
     matchRow(ref, other, view_right, mean_px, candidates, v, disparity_px->ptr<float>(v),
              subpixel_px != nullptr ? subpixel_px->ptr<float>(v) : nullptr);
   }
 }
 
+// The search keeps one integer key per candidate, cost * 512 + class * 256 + d (class 0: band, 1:
+// support), and takes the smallest: the smallest cost, among equal costs a band candidate before a
+// support candidate, then the smaller disparity. That is the candidate a scan of the band and then of
+// the supports in increasing d with strict improvement picks, found without a branch per candidate
+// (the data-dependent branch of that scan was mispredicted on about every other candidate).
 inline float ElasDenseMatcher::matchPixel(const std::uint8_t* ref_row, const std::uint8_t* other_row, bool view_right,
                                    int width, float mu, const std::uint64_t* cell, int words, int u,
                                    float* subpixel) const {
   constexpr std::ptrdiff_t kBytes = ElasDescriptorImage::kBytes;
+  constexpr int kSupportClass = 256;
+  constexpr int kCachedBand = 16;  // band costs kept for the sub-pixel step (the band is 2 sradius + 1 wide)
   const std::uint8_t* f_ref = ref_row + u * kBytes;
   if (descriptorTexture(f_ref) < params_.match_texture) return -1.0f;
   const std::ptrdiff_t dir = view_right ? kBytes : -kBytes;  // other pixel = u + (+-) d
   const std::uint8_t* f_other = other_row + u * kBytes;      // at d = 0
   const int d_last = std::min(params_.num_disparities - 1, view_right ? width - 1 - u : u);
-  const float sradius = static_cast<float>(params_.sradius_px);
-  int best_d = -1;
-  int best_cost = INT_MAX;
-  // 1) the band |d - mu| <= sradius, with the prior bonus (priorBonus() with mu >= 0 known)
-  int band_lo = 1, band_hi = 0;
-  if (mu >= 0.0f) {
-    band_lo = std::max(0, ceilToInt(mu - sradius));
-    band_hi = std::min(d_last, floorToInt(mu + sradius));
-    const std::uint8_t* f = f_other + band_lo * dir;
-    for (int d = band_lo; d <= band_hi; ++d, f += dir) {
-      const float x = std::fabs(static_cast<float>(d) - mu);
-      const int bonus = x > sradius ? 0 : prior_bonus_[static_cast<int>(x * kPriorSteps + 0.5f)];
-      const int c = sad16(f_ref, f) + bonus;
-      if (c < best_cost) {
-        best_cost = c;
-        best_d = d;
-      }
-    }
+  int best_key = INT_MAX;
+  int band_cost[kCachedBand];
+  // 1) the band |d - mu| <= sradius (empty without a prior), with the prior bonus of prepareRow()
+  const int band_lo = band_lo_[u], band_hi = band_hi_[u];
+  const std::uint8_t* f = f_other + band_lo * dir;
+  const int* bonus_index = bonus_index_.data() + u;
+  for (int d = band_lo; d <= band_hi; ++d, f += dir) {
+    const int k = d - band_lo;
+    const int index = k < band_slots_ ? bonus_index[static_cast<std::ptrdiff_t>(k) * width] : bonusIndex(d, mu);
+    const int c = sad16(f_ref, f) + prior_bonus_[index];
+    if (k < kCachedBand) band_cost[k] = c;
+    best_key = std::min(best_key, c * 512 + d);
   }
   // 2) the support disparities of the cell outside the band, likelihood only
   for (int w = 0; w < words && 64 * w <= d_last; ++w) {
     std::uint64_t m = cell[w] & bitsBetween(64 * w, 0, d_last) & ~bitsBetween(64 * w, band_lo, band_hi);
     for (; m != 0; m &= m - 1) {
       const int d = 64 * w + std::countr_zero(m);
-      const int c = sad16(f_ref, f_other + d * dir);
-      if (c < best_cost) {
-        best_cost = c;
-        best_d = d;
-      }
+      best_key = std::min(best_key, sad16(f_ref, f_other + d * dir) * 512 + kSupportClass + d);
     }
   }
-  if (best_d < 0) return -1.0f;
+  if (best_key == INT_MAX) return -1.0f;
+  const int best_d = best_key & 255;
   if (subpixel != nullptr) {
+    const int best_cost = best_key >> 9;  // arithmetic shift: floor(key / 512), also for negative costs
+    // cost with the prior bonus of a neighbour of best_d: from the band when it was there
+    const auto cost = [&](int d) {
+      if (d >= band_lo && d <= band_hi && d - band_lo < kCachedBand) return band_cost[d - band_lo];
+      return sad16(f_ref, f_other + d * dir) + priorBonus(d, mu);
+    };
     subpixel[u] = 0.0f;
     if (best_d > 0 && best_d < d_last) {
       // parabola through (d-1, d, d+1): vertex offset (c- - c+) / (2 (c- - 2 c + c+))
-      const int c_minus = sad16(f_ref, f_other + (best_d - 1) * dir) + priorBonus(best_d - 1, mu);
-      const int c_plus = sad16(f_ref, f_other + (best_d + 1) * dir) + priorBonus(best_d + 1, mu);
+      const int c_minus = cost(best_d - 1);
+      const int c_plus = cost(best_d + 1);
       const int curvature = c_minus - 2 * best_cost + c_plus;
       if (curvature > 0) {
         subpixel[u] = std::clamp(0.5f * static_cast<float>(c_minus - c_plus) / curvature, -0.5f, 0.5f);

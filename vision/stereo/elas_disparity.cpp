@@ -37,7 +37,7 @@ bool ElasDisparity::init(const ElasParams& params, int width_px, int height_px) 
       candidates_left_.allocate(width_px, height_px, params.grid_size_px, params.num_disparities) &&
       candidates_right_.allocate(width_px, height_px, params.grid_size_px,
                                  params.num_disparities) &&
-      dense_.allocate(params) && speckle_.allocate(width_px, height_px) &&
+      dense_.allocate(params, width_px) && speckle_.allocate(width_px, height_px) &&
       refiner_.allocate(width_px, height_px, params.num_disparities);
   if (!ready_) return false;
   grey_left_.create(height_px, width_px, CV_8UC1);
