@@ -6,10 +6,12 @@
 
 #include <cmath>
 #include <opencv2/core.hpp>
+#include <opencv2/imgproc.hpp>
 #include <vector>
 
 #include "tests/support/synthetic_plane_scene.h"
 #include "tools/bench/one_core_main.h"
+#include "vision/orbvo/fixed_point_gaussian.h"
 #include "vision/orbvo/grid_orb_extractor.h"
 #include "vision/orbvo/orb_stereo_odometry.h"
 #include "vision/orbvo/stereo_feature_matcher.h"
@@ -125,6 +127,23 @@ void BM_OrbExtractOneImage(benchmark::State& state) {
   state.counters["features"] = static_cast<double>(features.size());
 }
 
+// The smoothing before BRIEF sampling on one 688x516 image (sigma 2 px, 13 taps): OpenCV's
+// cv::GaussianBlur (arg 0) against FixedPointGaussian (arg 1), which gives the same bits.
+void BM_BriefSmoothing(benchmark::State& state) {
+  const cv::Mat& image = sequence()[0].left;
+  deepnav::FixedPointGaussian blur;
+  if (state.range(0) == 1 && !blur.init(2.0, {image.size()})) state.SkipWithError("init");
+  cv::Mat smoothed(image.size(), CV_8UC1);
+  for (auto _ : state) {
+    if (state.range(0) == 0) {
+      cv::GaussianBlur(image, smoothed, cv::Size(0, 0), 2.0);
+    } else {
+      blur.apply(image, &smoothed);
+    }
+    benchmark::DoNotOptimize(smoothed.data);
+  }
+}
+
 void BM_StereoMatch(benchmark::State& state) {
   deepnav::GridOrbExtractor extractor;
   if (!extractor.init(deepnav::OrbExtractorConfig(), 688, 516)) state.SkipWithError("init");
@@ -154,5 +173,6 @@ BENCHMARK(BM_OrbVoFrame)->Unit(benchmark::kMillisecond)->MinTime(3.0);
 BENCHMARK(BM_OrbVoLostFrameRelocalisation)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_OrbExtractOneImage)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_StereoMatch)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_BriefSmoothing)->Arg(0)->Arg(1)->ArgName("fixed_point")->Unit(benchmark::kMillisecond);
 
 int main(int argc, char** argv) { return deepnav::bench::runBenchmarksOnOneCore(argc, argv); }

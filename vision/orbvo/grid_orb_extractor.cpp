@@ -46,6 +46,9 @@ bool GridOrbExtractor::init(const OrbExtractorConfig& config, int width_px, int 
         1, static_cast<int>(std::lround(config.max_features_per_cell / (scales_[l] * scales_[l]))));
     capacity_ += cell_budget_[l] * config.grid_cols * config.grid_rows;
   }
+  std::vector<cv::Size> level_sizes;
+  for (const cv::Mat& s : smoothed_) level_sizes.push_back(s.size());
+  exact_blur_ = blur_.init(config.smoothing_sigma_px, level_sizes);
   cell_threshold_.assign(
       static_cast<std::size_t>(config.n_levels) * config.grid_cols * config.grid_rows, 0);
   fast_corners_.reserve(static_cast<std::size_t>(width_px) * height_px / 16 + 64);
@@ -70,7 +73,11 @@ int GridOrbExtractor::extract(const cv::Mat& grey, std::vector<OrbFeature>* feat
 void GridOrbExtractor::extractLevel(int level, std::vector<OrbFeature>* features,
                                     std::vector<OrbDescriptor>* descriptors) {
   const cv::Mat& image = levels_[level];
-  cv::GaussianBlur(image, smoothed_[level], cv::Size(0, 0), config_.smoothing_sigma_px);
+  if (exact_blur_ && !image.isSubmatrix()) {
+    blur_.apply(image, &smoothed_[level]);  // the same bits as cv::GaussianBlur, checked in init()
+  } else {
+    cv::GaussianBlur(image, smoothed_[level], cv::Size(0, 0), config_.smoothing_sigma_px);
+  }
   SteeredBrief::Offsets& offsets = brief_offsets_[level];
   const int smoothed_step = static_cast<int>(smoothed_[level].step1());
   if (offsets.step != smoothed_step) brief_.fillOffsets(smoothed_step, &offsets);

@@ -2,6 +2,7 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
+#include "vision/orbvo/fixed_point_gaussian.h"
 #include "vision/orbvo/orb_feature.h"
 #include "vision/orbvo/steered_brief.h"
 
@@ -29,8 +30,9 @@ struct OrbExtractorConfig {
   double smoothing_sigma_px = 2.0;  // Gaussian applied before BRIEF sampling (as ORB), > 0
 };
 
-// Allocation: every image and bookkeeping buffer is sized in init(); cv::FAST and cv::GaussianBlur
-// allocate small internal buffers on each call (OpenCV), nothing else does.
+// Allocation: every image and bookkeeping buffer is sized in init(); cv::FAST allocates small internal
+// buffers on each call (OpenCV), nothing else does (the smoothing is FixedPointGaussian's, which
+// allocates nothing, unless this OpenCV blurs differently: then cv::GaussianBlur, which does).
 class GridOrbExtractor {
  public:
   bool init(const OrbExtractorConfig& config, int width_px, int height_px);
@@ -39,6 +41,8 @@ class GridOrbExtractor {
   int capacity() const { return capacity_; }
   int levels() const { return config_.n_levels; }
   double levelScale(int level) const { return scales_[level]; }
+  // True when the smoothing runs in FixedPointGaussian (same bits as cv::GaussianBlur, fewer instructions).
+  bool smoothsInFixedPoint() const { return exact_blur_; }
 
   // Features of `grey` (CV_8UC1 of the init size), sorted by level; descriptors[i] belongs to
   // features[i]. Both vectors are cleared first and never grow past capacity(). Returns the count,
@@ -64,6 +68,8 @@ class GridOrbExtractor {
   std::vector<cv::KeyPoint> fast_corners_;  // one FAST call
   std::vector<cv::KeyPoint> cell_corners_;  // the corners of one cell
   SteeredBrief brief_;
+  FixedPointGaussian blur_;  // cv::GaussianBlur's result in about 60 % of its instructions
+  bool exact_blur_ = false;  // blur_ reproduces cv::GaussianBlur for every level
 };
 
 }  // namespace deepnav

@@ -1,0 +1,181 @@
+#include "vision/orbvo/fixed_point_gaussian.h"
+
+#include <algorithm>
+#include <utility>
+#include <opencv2/core/hal/intrin.hpp>
+#include <opencv2/imgproc.hpp>
+
+namespace deepnav {
+namespace {
+
+constexpr int kWeightSum = 256;  // OpenCV's 8-bit Gaussian weights are fixed point with 8 fraction bits
+
+// BORDER_REFLECT_101 (gfedcb|abcdefgh|gfedcba) for |overshoot| < n.
+int reflect101(int i, int n) {
+  if (i < 0) return -i;
+  if (i >= n) return 2 * n - 2 - i;
+  return i;
+}
+
+using Weights = std::array<std::uint16_t, FixedPointGaussian::kMaxRadiusPx + 1>;
+
+// V(x) = w_0 I(y, x) + sum_k w_k (I(y-k, x) + I(y+k, x)), exact in 16 bits (at most 255 * 256). The
+// radius is a template argument so that the tap loops unroll.
+template <int R>
+void columnSums(const Weights& w, const cv::Mat& src, int y, std::uint16_t* sums) {
+  std::array<const std::uint8_t*, 2 * R + 1> row{};  // row[R + i]: source row y + i
+  for (int i = -R; i <= R; ++i) row[R + i] = src.ptr<std::uint8_t>(reflect101(y + i, src.rows));
+  int x = 0;
+#if CV_SIMD128
+  std::array<cv::v_uint16x8, R + 1> wv;
+  for (int k = 0; k <= R; ++k) wv[k] = cv::v_setall_u16(w[k]);
+  for (; x <= src.cols - 16; x += 16) {
+    cv::v_uint16x8 lo, hi;
+    cv::v_expand(cv::v_load(row[R] + x), lo, hi);
+    cv::v_uint16x8 sum_lo = cv::v_mul_wrap(lo, wv[0]);
+    cv::v_uint16x8 sum_hi = cv::v_mul_wrap(hi, wv[0]);
+#pragma GCC unroll 16
+    for (int k = 1; k <= R; ++k) {
+      cv::v_uint16x8 a_lo, a_hi, b_lo, b_hi;
+      cv::v_expand(cv::v_load(row[R - k] + x), a_lo, a_hi);
+      cv::v_expand(cv::v_load(row[R + k] + x), b_lo, b_hi);
+      sum_lo += cv::v_mul_wrap(a_lo + b_lo, wv[k]);
+      sum_hi += cv::v_mul_wrap(a_hi + b_hi, wv[k]);
+    }
+    cv::v_store(sums + x, sum_lo);
+    cv::v_store(sums + x + 8, sum_hi);
+  }
+#endif
+  for (; x < src.cols; ++x) {
+    unsigned sum = w[0] * row[R][x];
+    for (int k = 1; k <= R; ++k) sum += w[k] * (row[R - k][x] + row[R + k][x]);
+    sums[x] = static_cast<std::uint16_t>(sum);
+  }
+}
+
+template <int R>
+void reflectEnds(std::uint16_t* sums, int width_px) {
+  for (int k = 1; k <= R; ++k) {
+    sums[-k] = sums[k];
+    sums[width_px - 1 + k] = sums[width_px - 1 - k];
+  }
+}
+
+// out = (sum_k w_k V(x+k) + 2^15) >> 16, with V = 256 hi + lo so both partial sums fit 16 bits.
+template <int R>
+void rowPass(const Weights& w, const std::uint16_t* sums, int width_px, std::uint8_t* out) {
+  int x = 0;
+#if CV_SIMD128
+  std::array<cv::v_uint16x8, R + 1> wv;
+  for (int k = 0; k <= R; ++k) wv[k] = cv::v_setall_u16(w[k]);
+  const cv::v_uint16x8 low_byte = cv::v_setall_u16(0xff);
+  const cv::v_uint16x8 half = cv::v_setall_u16(128);
+  const auto blur8 = [&](const std::uint16_t* p) {
+    const cv::v_uint16x8 centre = cv::v_load(p);
+    cv::v_uint16x8 a = cv::v_mul_wrap(cv::v_shr<8>(centre), wv[0]);
+    cv::v_uint16x8 b = cv::v_mul_wrap(centre & low_byte, wv[0]);
+#pragma GCC unroll 16
+    for (int k = 1; k <= R; ++k) {
+      const cv::v_uint16x8 left = cv::v_load(p - k);
+      const cv::v_uint16x8 right = cv::v_load(p + k);
+      a += cv::v_mul_wrap(cv::v_shr<8>(left) + cv::v_shr<8>(right), wv[k]);
+      b += cv::v_mul_wrap((left & low_byte) + (right & low_byte), wv[k]);
+    }
+    return cv::v_shr<8>(a + cv::v_shr<8>(b) + half);
+  };
+  for (; x <= width_px - 16; x += 16) {
+    cv::v_store(out + x, cv::v_pack(blur8(sums + x), blur8(sums + x + 8)));
+  }
+#endif
+  for (; x < width_px; ++x) {
+    std::uint32_t sum = w[0] * sums[x];
+    for (int k = 1; k <= R; ++k) sum += w[k] * (sums[x - k] + sums[x + k]);
+    out[x] = static_cast<std::uint8_t>((sum + (1u << 15)) >> 16);
+  }
+}
+
+// `sums` has R writable entries before it and after its src.cols.
+template <int R>
+void blurImage(const Weights& w, const cv::Mat& src, cv::Mat* dst, std::uint16_t* sums) {
+  for (int y = 0; y < src.rows; ++y) {
+    columnSums<R>(w, src, y, sums);
+    reflectEnds<R>(sums, src.cols);
+    rowPass<R>(w, sums, src.cols, dst->ptr<std::uint8_t>(y));
+  }
+}
+
+using BlurFn = void (*)(const Weights&, const cv::Mat&, cv::Mat*, std::uint16_t*);
+
+template <std::size_t... I>
+constexpr std::array<BlurFn, sizeof...(I)> blurTable(std::index_sequence<I...>) {
+  return {&blurImage<static_cast<int>(I)>...};
+}
+
+// Index 0 is never called (init() refuses a kernel of one tap).
+constexpr auto kBlurByRadius = blurTable(std::make_index_sequence<FixedPointGaussian::kMaxRadiusPx + 1>());
+
+}  // namespace
+
+bool FixedPointGaussian::init(double sigma_px, const std::vector<cv::Size>& sizes) {
+  radius_px_ = 0;
+  if (!(sigma_px > 0.0) || !readWeights(sigma_px)) {
+    radius_px_ = 0;
+    return false;
+  }
+  int max_width_px = 0;
+  for (const cv::Size& s : sizes) max_width_px = std::max(max_width_px, s.width);
+  sums_.assign(static_cast<std::size_t>(max_width_px + 2 * radius_px_), 0);
+  for (const cv::Size& s : sizes) {
+    if (!reproduces(sigma_px, s)) {
+      radius_px_ = 0;
+      return false;
+    }
+  }
+  return true;
+}
+
+// A vertical line of 255 in a flat image: every column sum is 255 * 256, so the output next to the line
+// is (255 * 256 * w + 2^15) >> 16 = floor(w + (128 - w) / 256) = w for 0 <= w <= 128.
+bool FixedPointGaussian::readWeights(double sigma_px) {
+  constexpr int kSide = 4 * kMaxRadiusPx + 3;
+  constexpr int kLine = kSide / 2;
+  cv::Mat line(kSide, kSide, CV_8UC1, cv::Scalar(0));
+  line.col(kLine).setTo(255);
+  cv::Mat out;
+  cv::GaussianBlur(line, out, cv::Size(0, 0), sigma_px);
+  const std::uint8_t* row = out.ptr<std::uint8_t>(kLine);
+  if (row[kLine - kMaxRadiusPx - 1] != 0) return false;  // wider than kMaxRadiusPx
+  int sum = row[kLine];
+  weight_.fill(0);
+  weight_[0] = row[kLine];
+  for (int k = 1; k <= kMaxRadiusPx; ++k) {
+    if (row[kLine - k] != row[kLine + k]) return false;  // not symmetric: not the kernel assumed here
+    weight_[k] = row[kLine + k];
+    sum += 2 * weight_[k];
+    if (weight_[k] != 0) radius_px_ = k;
+  }
+  return sum == kWeightSum && weight_[0] <= 128 && radius_px_ >= 1;
+}
+
+// Random texture and a saturated image of this size, through both blurs.
+bool FixedPointGaussian::reproduces(double sigma_px, cv::Size size) {
+  if (size.width <= 2 * radius_px_ || size.height <= 2 * radius_px_) return false;
+  cv::Mat image(size, CV_8UC1);
+  cv::RNG rng(0x5eed);
+  rng.fill(image, cv::RNG::UNIFORM, 0, 256);
+  cv::Mat expected, got;
+  for (int trial = 0; trial < 2; ++trial) {
+    if (trial == 1) image.setTo(255);
+    cv::GaussianBlur(image, expected, cv::Size(0, 0), sigma_px);
+    apply(image, &got);
+    if (cv::norm(expected, got, cv::NORM_INF) != 0.0) return false;
+  }
+  return true;
+}
+
+void FixedPointGaussian::apply(const cv::Mat& src, cv::Mat* dst) {
+  dst->create(src.size(), CV_8UC1);
+  kBlurByRadius[radius_px_](weight_, src, dst, sums_.data() + radius_px_);
+}
+
+}  // namespace deepnav
