@@ -2,6 +2,11 @@
 
 namespace deepnav {
 
+// How regions are grown (PlaneExtractor): kPixels, the Poppinga grower below, point by point
+// (PlaneRegionGrower, the default); kTiles, the cell-based grower of Proenca & Gao (CAPE, IROS
+// 2018): planar tiles grown over the tile graph, then pixel refinement (PlaneTileGrower).
+enum class PlaneGrowingMethod { kPixels = 0, kTiles = 1 };
+
 // Region growing after Poppinga, Vaskevicius, Birk & Pathak, "Fast plane detection and
 // polygonalization in noisy 3D range images", IROS 2008, adapted to stereo noise. Areas and
 // spacings are in image pixels, so a config holds at any cloud step (they are divided by step^2
@@ -40,6 +45,17 @@ struct PlaneExtractionConfig {
   // Correlated stereo errors (PlaneNoiseModel::independent_points): at most this many fitted cells count
   // as independent in the covariance; 0 = all of them (the size test still uses the full Hessian).
   double independent_points = 0.0;
+
+  // Tile growing (growing == kTiles, PlaneTileGrower). A tile is tile_size_px x tile_size_px image
+  // pixels (tile_size_px / step grid cells, at least 2); it is planar when at least
+  // tile_min_valid_fraction of its cells hold a point and its mean squared distance to its own
+  // plane, beyond the expected stereo noise, is at most max_mse_m2. A planar tile joins a region
+  // when its normal is within tile_max_normal_angle_deg of the region's, its centroid passes the
+  // point test above and the region's MSE with it passes the region test above.
+  PlaneGrowingMethod growing = PlaneGrowingMethod::kPixels;
+  int tile_size_px = 16;                   // 4..64
+  double tile_min_valid_fraction = 0.5;    // (0, 1]
+  double tile_max_normal_angle_deg = 20.0; // (0, 90]
 
   // Polygons
   int max_polygons = 256;

@@ -12,9 +12,11 @@ bool PlaneExtractor::init(const PlaneExtractionConfig& config, const StereoGeome
       config.independent_points < 0.0) {
     return false;
   }
-  if (!grower_.init(config, geometry.fx_px, geometry.focalBaseline(), rows, cols, step_px)) {
-    return false;
-  }
+  const bool grower_ready =
+      config.growing == PlaneGrowingMethod::kTiles
+          ? tile_grower_.init(config, geometry.fx_px, geometry.focalBaseline(), rows, cols, step_px)
+          : grower_.init(config, geometry.fx_px, geometry.focalBaseline(), rows, cols, step_px);
+  if (!grower_ready) return false;
   if (!tracer_.init(rows, cols)) return false;
   config_ = config;
   step_px_ = step_px;
@@ -39,22 +41,31 @@ int PlaneExtractor::extract(const OrganizedCloud& cloud, PlaneSet* planes) {
     return -1;
   }
   planes->clear();
+  if (tiles()) {
+    const int regions = tile_grower_.grow(cloud);
+    return regions < 0 ? -1 : fitAndTrace(tile_grower_, regions, cloud, planes);
+  }
   const int regions = grower_.grow(cloud);
-  if (regions < 0) return -1;
+  return regions < 0 ? -1 : fitAndTrace(grower_, regions, cloud, planes);
+}
+
+template <class Grower>
+int PlaneExtractor::fitAndTrace(const Grower& grower, int regions, const OrganizedCloud& cloud,
+                                PlaneSet* planes) {
   plane_of_label_.fill(-1);
   region_of_label_.fill(-1);
-  for (int i = 0; i < regions; ++i) region_of_label_[grower_.region(i).label] = i;
+  for (int i = 0; i < regions; ++i) region_of_label_[grower.region(i).label] = i;
   // Neighbouring planes (the grower's estimates): their intersections are kept out of the fit.
   for (int i = 0; i < regions; ++i) {
-    const PlaneRegion& region = grower_.region(i);
+    const PlaneRegion& region = grower.region(i);
     NeighbourBand band;
     band.planes = neighbour_planes_.data() + i * config_.max_planes;
     band.band_m = static_cast<float>(config_.max_point_distance_m);
     band.band_sigmas = static_cast<float>(config_.distance_sigmas + 3.0);
-    const std::bitset<256>& adjacent = grower_.adjacentLabels(region.label);
+    const std::bitset<256>& adjacent = grower.adjacentLabels(region.label);
     for (int l = 1; l < 256 && band.count < config_.max_planes; ++l) {
       if (!adjacent.test(l) || region_of_label_[l] < 0) continue;
-      const PlaneRegion& other = grower_.region(region_of_label_[l]);
+      const PlaneRegion& other = grower.region(region_of_label_[l]);
       neighbour_planes_[i * config_.max_planes + band.count++] << other.normal.cast<float>(),
           static_cast<float>(other.normal.dot(other.sums.mean()));
     }
@@ -62,9 +73,9 @@ int PlaneExtractor::extract(const OrganizedCloud& cloud, PlaneSet* planes) {
   }
   // One raster pass feeds every plane's fit (sequential reads of the cloud) and bounding box
   // (x, y: the smallest column and row; width, height: the largest, made sizes below).
-  const cv::Mat& labels = grower_.labels();
+  const cv::Mat& labels = grower.labels();
   for (int i = 0; i < regions; ++i) {
-    bbox_of_label_[grower_.region(i).label] = cv::Rect(cloud.cols(), cloud.rows(), -1, -1);
+    bbox_of_label_[grower.region(i).label] = cv::Rect(cloud.cols(), cloud.rows(), -1, -1);
   }
   for (int r = 0; r < cloud.rows(); ++r) {
     const std::uint8_t* l = labels.ptr<std::uint8_t>(r);
@@ -85,7 +96,7 @@ int PlaneExtractor::extract(const OrganizedCloud& cloud, PlaneSet* planes) {
     }
   }
   for (int i = 0; i < regions; ++i) {
-    const PlaneRegion& region = grower_.region(i);
+    const PlaneRegion& region = grower.region(i);
     Plane* plane = planes->addPlane();
     if (plane == nullptr) break;
     if (!fits_[i].solve(region.sums, region.member_count, plane)) {
@@ -98,7 +109,7 @@ int PlaneExtractor::extract(const OrganizedCloud& cloud, PlaneSet* planes) {
     plane_of_label_[region.label] = planes->size() - 1;
   }
   const double min_hole_area_px2 = config_.min_hole_area_px;
-  tracer_.trace(grower_.labels(), plane_of_label_.data(), step_px_, min_hole_area_px2, planes);
+  tracer_.trace(grower.labels(), plane_of_label_.data(), step_px_, min_hole_area_px2, planes);
   return planes->size();
 }
 

@@ -9,10 +9,12 @@
 #include "vision/planes/plane_fit.h"
 #include "vision/planes/plane_region_grower.h"
 #include "vision/planes/plane_set.h"
+#include "vision/planes/plane_tile_grower.h"
 
 namespace deepnav {
 
-// Planes of one organised cloud: region growing (PlaneRegionGrower), a weighted fit with the
+// Planes of one organised cloud: region growing (PlaneRegionGrower, or PlaneTileGrower when
+// config.growing is kTiles), a weighted fit with the
 // plane-parameter Hessian and covariance per region (fitPlaneWithUncertainty), then boundary and
 // hole polygons (PlaneContourTracer). Every buffer is sized in init(); extract() allocates nothing.
 class PlaneExtractor {
@@ -26,16 +28,25 @@ class PlaneExtractor {
   // Fills *planes (cleared first); returns the number of planes, -1 on a size mismatch.
   int extract(const OrganizedCloud& cloud, PlaneSet* planes);
 
-  const cv::Mat& labels() const { return grower_.labels(); }  // label of plane i: planes[i].label
-  const PlaneRegionGrower& grower() const { return grower_; }
+  // label of plane i: planes[i].label
+  const cv::Mat& labels() const { return tiles() ? tile_grower_.labels() : grower_.labels(); }
+  const PlaneRegionGrower& grower() const { return grower_; }  // growing == kPixels
+  const PlaneTileGrower& tileGrower() const { return tile_grower_; }  // growing == kTiles
   const PlaneExtractionConfig& config() const { return config_; }
 
  private:
+  bool tiles() const { return config_.growing == PlaneGrowingMethod::kTiles; }
+  // The fit and polygons of the regions of either grower.
+  template <class Grower>
+  int fitAndTrace(const Grower& grower, int regions, const OrganizedCloud& cloud,
+                  PlaneSet* planes);
+
   bool ready_ = false;
   PlaneExtractionConfig config_;
   PlaneNoiseModel noise_;
   int step_px_ = 1;
   PlaneRegionGrower grower_;
+  PlaneTileGrower tile_grower_;
   PlaneContourTracer tracer_;
   std::array<int, 256> plane_of_label_{};
   std::array<int, 256> region_of_label_{};

@@ -1,0 +1,128 @@
+#include "vision/planes/tile_sums.h"
+
+#include <opencv2/core/hal/intrin.hpp>
+
+namespace deepnav {
+namespace {
+
+// Ten running sums, four lanes each; masked lanes add zero.
+struct LaneSums {
+  cv::v_float32x4 n = cv::v_setzero_f32(), x = cv::v_setzero_f32(), y = cv::v_setzero_f32(),
+                  z = cv::v_setzero_f32(), xx = cv::v_setzero_f32(), xy = cv::v_setzero_f32(),
+                  xz = cv::v_setzero_f32(), yy = cv::v_setzero_f32(), yz = cv::v_setzero_f32(),
+                  zz = cv::v_setzero_f32();
+  void add(const cv::v_float32x4& mask, cv::v_float32x4 qx, cv::v_float32x4 qy,
+           cv::v_float32x4 qz) {
+    const cv::v_float32x4 zero = cv::v_setzero_f32();
+    n = n + cv::v_select(mask, cv::v_setall_f32(1.0f), zero);
+    qx = cv::v_select(mask, qx, zero);
+    qy = cv::v_select(mask, qy, zero);
+    qz = cv::v_select(mask, qz, zero);
+    x = x + qx;
+    y = y + qy;
+    z = z + qz;
+    xx = cv::v_fma(qx, qx, xx);
+    xy = cv::v_fma(qx, qy, xy);
+    xz = cv::v_fma(qx, qz, xz);
+    yy = cv::v_fma(qy, qy, yy);
+    yz = cv::v_fma(qy, qz, yz);
+    zz = cv::v_fma(qz, qz, zz);
+  }
+  TileSums reduce() const {
+    return TileSums{cv::v_reduce_sum(n),  cv::v_reduce_sum(x),  cv::v_reduce_sum(y),
+                    cv::v_reduce_sum(z),  cv::v_reduce_sum(xx), cv::v_reduce_sum(xy),
+                    cv::v_reduce_sum(xz), cv::v_reduce_sum(yy), cv::v_reduce_sum(yz),
+                    cv::v_reduce_sum(zz)};
+  }
+};
+
+void addScalar(const cv::Vec3f& p, const cv::Vec3f& ref, TileSums* t) {
+  const float x = p[0] - ref[0], y = p[1] - ref[1], z = p[2] - ref[2];
+  t->n += 1.0f;
+  t->sx += x;
+  t->sy += y;
+  t->sz += z;
+  t->sxx += x * x;
+  t->sxy += x * y;
+  t->sxz += x * z;
+  t->syy += y * y;
+  t->syz += y * z;
+  t->szz += z * z;
+}
+
+void merge(const TileSums& o, TileSums* t) {
+  t->n += o.n;
+  t->sx += o.sx;
+  t->sy += o.sy;
+  t->sz += o.sz;
+  t->sxx += o.sxx;
+  t->sxy += o.sxy;
+  t->sxz += o.sxz;
+  t->syy += o.syy;
+  t->syz += o.syz;
+  t->szz += o.szz;
+}
+
+// Lanes of cells selected by `select(row, col, z)` (a mask of four lanes from column col).
+template <class Select, class SelectOne>
+TileSums sumSelected(const TileView& tile, const cv::Vec3f& ref, Select select,
+                     SelectOne select_one) {
+  LaneSums lanes;
+  TileSums tail;
+  const cv::v_float32x4 rx = cv::v_setall_f32(ref[0]), ry = cv::v_setall_f32(ref[1]),
+                        rz = cv::v_setall_f32(ref[2]);
+  for (int r = 0; r < tile.rows; ++r) {
+    const cv::Vec3f* p = tile.points + static_cast<std::ptrdiff_t>(r) * tile.stride;
+    int c = 0;
+    for (; c + 4 <= tile.cols; c += 4) {
+      cv::v_float32x4 x, y, z;
+      cv::v_load_deinterleave(&p[c][0], x, y, z);
+      lanes.add(select(r, c, z), x - rx, y - ry, z - rz);
+    }
+    for (; c < tile.cols; ++c) {
+      if (select_one(r, c, p[c])) addScalar(p[c], ref, &tail);
+    }
+  }
+  TileSums sums = lanes.reduce();
+  merge(tail, &sums);
+  return sums;
+}
+
+}  // namespace
+
+TileSums sumTile(const TileView& tile, const cv::Vec3f& ref) {
+  const cv::v_float32x4 zero = cv::v_setzero_f32();
+  return sumSelected(
+      tile, ref, [&](int, int, const cv::v_float32x4& z) { return z > zero; },
+      [](int, int, const cv::Vec3f& p) { return p[2] > 0.0f; });
+}
+
+TileSums sumTileLabel(const TileView& tile, const cv::Vec3f& ref, const std::uint8_t* labels,
+                      int label_stride, std::uint8_t label) {
+  const cv::v_uint32x4 wanted = cv::v_setall_u32(label);
+  return sumSelected(
+      tile, ref,
+      [&](int r, int c, const cv::v_float32x4&) {
+        const cv::v_uint32x4 l = cv::v_load_expand_q(labels + r * label_stride + c);
+        return cv::v_reinterpret_as_f32(l == wanted);
+      },
+      [&](int r, int c, const cv::Vec3f&) { return labels[r * label_stride + c] == label; });
+}
+
+void addTileSums(const TileSums& t, const cv::Vec3f& ref, ScatterSums* s) {
+  const double dx = ref[0] - s->origin.x(), dy = ref[1] - s->origin.y(),
+               dz = ref[2] - s->origin.z();
+  const double n = t.n, x = t.sx, y = t.sy, z = t.sz;
+  s->n += n;
+  s->sx += x + n * dx;
+  s->sy += y + n * dy;
+  s->sz += z + n * dz;
+  s->sxx += t.sxx + 2.0 * dx * x + n * dx * dx;
+  s->sxy += t.sxy + dx * y + dy * x + n * dx * dy;
+  s->sxz += t.sxz + dx * z + dz * x + n * dx * dz;
+  s->syy += t.syy + 2.0 * dy * y + n * dy * dy;
+  s->syz += t.syz + dy * z + dz * y + n * dy * dz;
+  s->szz += t.szz + 2.0 * dz * z + n * dz * dz;
+}
+
+}  // namespace deepnav
