@@ -9,6 +9,13 @@ namespace {
 
 constexpr int kMaxColourDiff = 3 * 255;
 constexpr std::uint16_t kNoBin = 0xFFFF;
+// Invalid pixels take part in the window loops without a branch: their guide key points the weight
+// lookup at zeros past the weights (grey: key 512 instead of the grey level, LUT index 255 - centre +
+// key > 510; colour: 1024 added to the colour distance <= 765) and their bin is a spare one past the
+// disparities. Adding the weight 0 leaves every sum exactly as it was (x + 0.0f == x for x >= 0), and
+// the spare bin, always 0, is never the median.
+constexpr std::uint16_t kInvalidGrey = 512;
+constexpr std::uint16_t kInvalidColour = 1024;
 
 // Running-count dilation of one line of n flags spaced by stride.
 void dilateLine(const std::uint8_t* in, std::uint8_t* out, int n, std::ptrdiff_t stride, int r) {
@@ -54,11 +61,12 @@ bool DisparityEdgeRefiner::allocate(int width_px, int height_px, int num_dispari
   band_.assign(pixels, 0);
   rows_.assign(pixels, 0);
   column_count_.assign(static_cast<std::size_t>(width_px), 0);
-  bin_.assign(pixels, kNoBin);
-  weight_lut_.assign(kMaxColourDiff + 1, 0.0f);
-  weight_by_grey_diff_.assign(2 * 255 + 1, 0.0f);
-  hist_w_.assign(bins_, 0.0f);
-  hist_wd_.assign(bins_, 0.0f);
+  bin_.assign(pixels, static_cast<std::uint16_t>(bins_));
+  guide_key_.assign(pixels, 0);
+  weight_lut_.assign(kInvalidColour + kMaxColourDiff + 1, 0.0f);
+  weight_by_grey_diff_.assign(255 + kInvalidGrey + 1, 0.0f);
+  hist_w_.assign(static_cast<std::size_t>(bins_) + 1, 0.0f);
+  hist_wd_.assign(static_cast<std::size_t>(bins_) + 1, 0.0f);
   source_px_.create(height_px, width_px, CV_32F);
   return true;
 }
@@ -79,7 +87,25 @@ void DisparityEdgeRefiner::markJumps(const cv::Mat& d, float jump_px) {
       jump[u] = is_jump ? 1 : 0;
       bin[u] = a >= 0.0f
                    ? static_cast<std::uint16_t>(std::min(bins_ - 1, static_cast<int>(a + 0.5f)))
-                   : kNoBin;
+                   : static_cast<std::uint16_t>(bins_);
+    }
+  }
+}
+
+template <int kChannels>
+void DisparityEdgeRefiner::markGuideKeys(const cv::Mat& guide) {
+  const int spare_bin = bins_;
+  for (int v = 0; v < height_px_; ++v) {
+    const std::uint8_t* g = guide.ptr<std::uint8_t>(v);
+    const std::uint16_t* bin = bin_.data() + static_cast<std::size_t>(v) * width_px_;
+    std::uint16_t* key = guide_key_.data() + static_cast<std::size_t>(v) * width_px_;
+    for (int u = 0; u < width_px_; ++u) {
+      const bool valid = bin[u] != spare_bin;
+      if constexpr (kChannels == 1) {
+        key[u] = valid ? g[u] : kInvalidGrey;
+      } else {
+        key[u] = valid ? 0 : kInvalidColour;
+      }
     }
   }
 }
@@ -124,7 +150,6 @@ void DisparityEdgeRefiner::dilateColumns(const std::uint8_t* in, std::uint8_t* o
 // order and with the same float operations as a scan of every bin.
 template <int kChannels>
 float DisparityEdgeRefiner::weightedMedian(const cv::Mat& guide, int u, int v, int reach) {
-  constexpr int kDiffScale = kChannels == 1 ? 3 : 1;  // grey differences on the colour scale
   const std::uint8_t* centre = guide.ptr<std::uint8_t>(v) + u * kChannels;
   const int stride = stride_px_;
   const int dv_first = firstOffset(v, reach, stride);
@@ -133,26 +158,27 @@ float DisparityEdgeRefiner::weightedMedian(const cv::Mat& guide, int u, int v, i
   const int u_last = std::min(u + reach, width_px_ - 1);
   float* hist_w = hist_w_.data();
   float* hist_wd = hist_wd_.data();
-  // grey: the weight straight from the signed difference (no abs, no scale); colour: from the l1 sum
+  // grey: the weight straight from the signed difference (no abs, no scale: the grey LUT holds
+  // weight_lut_[3 |g|], the colour scale); colour: from the l1 sum
   const float* lut_grey = weight_by_grey_diff_.data() + 255 - centre[0];
   const float* lut = weight_lut_.data();
   int bin_lo = bins_, bin_hi = -1;
   float total = 0.0f;
   for (int v2 = v + dv_first; v2 <= v_last; v2 += stride) {
     const std::uint16_t* bin_row = bin_.data() + static_cast<std::size_t>(v2) * width_px_;
+    const std::uint16_t* key_row = guide_key_.data() + static_cast<std::size_t>(v2) * width_px_;
     const float* d_row = source_px_.ptr<float>(v2);
     const std::uint8_t* g_row = guide.ptr<std::uint8_t>(v2);
     for (int u2 = u + du_first; u2 <= u_last; u2 += stride) {
-      const int bin = bin_row[u2];
-      if (bin == kNoBin) continue;
-      const std::uint8_t* q = g_row + u2 * kChannels;
+      const int bin = bin_row[u2];  // the spare bin, with weight 0, when invalid
       float wq;
       if constexpr (kChannels == 1) {
-        wq = lut_grey[q[0]];
+        wq = lut_grey[key_row[u2]];
       } else {
-        int diff = 0;
+        const std::uint8_t* q = g_row + u2 * kChannels;
+        int diff = key_row[u2];
         for (int c = 0; c < kChannels; ++c) diff += std::abs(q[c] - centre[c]);
-        wq = lut[diff * kDiffScale];
+        wq = lut[diff];
       }
       hist_w[bin] += wq;
       hist_wd[bin] += wq * d_row[u2];
@@ -208,8 +234,10 @@ void DisparityEdgeRefiner::apply(const cv::Mat& guide, const EdgeRefineParams& p
   for (std::uint8_t b : band_) band_px += b;
   stride_px_ = chooseStride(band_px, band_.size(), params.radius_px, params.budget);
   if (guide.channels() == 3) {
+    markGuideKeys<3>(guide);
     refineBand<3>(guide, params.radius_px, disparity_px);
   } else {
+    markGuideKeys<1>(guide);
     refineBand<1>(guide, params.radius_px, disparity_px);
   }
 }

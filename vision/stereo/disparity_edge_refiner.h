@@ -33,6 +33,8 @@ class DisparityEdgeRefiner {
 
  private:
   void markJumps(const cv::Mat& disparity_px, float jump_px);
+  template <int kChannels>
+  void markGuideKeys(const cv::Mat& guide);
   void dilateJumps(int radius_px);
   void dilateColumns(const std::uint8_t* in, std::uint8_t* out, int radius_px);
   template <int kChannels>
@@ -48,10 +50,11 @@ class DisparityEdgeRefiner {
   std::vector<std::uint8_t> band_;  // jump_ dilated by band_px (rows, then columns)
   std::vector<std::uint8_t> rows_;  // scratch of the separable dilation
   std::vector<std::int32_t> column_count_;  // per column: flags within the dilation window
-  std::vector<std::uint16_t> bin_;  // integer disparity of each pixel, kNoBin when invalid
-  std::vector<float> weight_lut_;   // exp(-diff / sigma), diff = 0 .. 765
-  std::vector<float> weight_by_grey_diff_;  // weight_lut_[3 |g|], g = grey difference -255 .. 255, at g + 255
-  std::vector<float> hist_w_;       // per integer disparity: sum of weights (zero between windows)
+  std::vector<std::uint16_t> bin_;  // integer disparity of each pixel, the spare bin bins_ when invalid
+  std::vector<std::uint16_t> guide_key_;  // grey level (grey guide) or 0 (colour), past the weights when invalid
+  std::vector<float> weight_lut_;   // exp(-diff / sigma), diff = 0 .. 765, then zeros
+  std::vector<float> weight_by_grey_diff_;  // weight_lut_[3 |g|], g = grey difference -255 .. 255, at g + 255; then zeros
+  std::vector<float> hist_w_;       // per integer disparity and the spare bin: sum of weights (zero between windows)
   std::vector<float> hist_wd_;      // per integer disparity: sum of weight * d
   cv::Mat source_px_;               // the input map, read while the output is written
   float lut_sigma_ = -1.0f;
