@@ -76,9 +76,11 @@ bool WorkspaceMap::insert(const OrganizedCloud& cloud, const Eigen::Isometry3d& 
         continue;
       }
       octomap::OcTreeKey key;
-      if (tree_->coordToKeyChecked(octomap::point3d(q.x(), q.y(), q.z()), key)) {
-        keys_[n++] = packKey(key);
-      }
+      if (!tree_->coordToKeyChecked(octomap::point3d(q.x(), q.y(), q.z()), key)) continue;
+      // Neighbouring pixels mostly fall in the same voxel: dropping a repeat of the previous key here
+      // leaves the sort below a fraction of the points and the same set of voxels.
+      const std::uint64_t packed = packKey(key);
+      if (n == 0 || keys_[n - 1] != packed) keys_[n++] = packed;
     }
   }
   if (rays) {
