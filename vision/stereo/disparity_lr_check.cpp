@@ -24,13 +24,15 @@ void checkLeftRight(const cv::Mat& right_px, float threshold_px, cv::Mat* left_p
   for (int v = 0; v < left_px->rows; ++v) {
     float* left = left_px->ptr<float>(v);
     const float* right = right_px.ptr<float>(v);
+    // without a data-dependent branch (about half the pixels of a low-texture frame fail, at random):
+    // an invalid or out-of-image match reads column 0 and is rejected by the flags
     for (int u = 0; u < width; ++u) {
       const float d = left[u];
-      if (d < 0.0f) continue;
       const int ur = roundHalfAway(static_cast<float>(u) - d);
-      const bool ok =
-          ur >= 0 && ur < width && right[ur] >= 0.0f && std::fabs(right[ur] - d) <= threshold_px;
-      if (!ok) left[u] = kInvalidDisparity;
+      const bool inside = d >= 0.0f && ur >= 0 && ur < width;
+      const float d_right = right[inside ? ur : 0];
+      const bool ok = inside && d_right >= 0.0f && std::fabs(d_right - d) <= threshold_px;
+      left[u] = ok ? d : kInvalidDisparity;
     }
   }
 }

@@ -21,6 +21,12 @@ std::uint64_t bitsBetween(int first, int lo, int hi) {
   return upto_hi & ~((std::uint64_t{1} << lo) - 1);
 }
 
+// Bits 0 .. d_last (d_last in [0, 63]) of one word.
+std::uint64_t bitsUpTo(int d_last) { return ~std::uint64_t{0} >> (63 - d_last); }
+
+// Bits lo .. lo + n - 1 of one word (lo + n <= 64); none when n <= 0.
+std::uint64_t bitsFrom(int lo, int n) { return n > 0 ? (~std::uint64_t{0} >> (64 - n)) << lo : 0; }
+
 // std::ceil / std::floor of a float with |x| < 2^24, as int: a truncation and a compare instead of
 // the bit manipulation the compiler inlines for ceilf / floorf without SSE4.1.
 int ceilToInt(float x) {
@@ -124,8 +130,12 @@ void ElasDenseMatcher::match(const ElasDescriptorImage& ref, const ElasDescripto
                              cv::Mat* subpixel_px) {
   for (int v = 0; v < ref.height(); ++v) {
     prepareRow(mean_px.ptr<float>(v), view_right, ref.width());
-    matchRow(ref, other, view_right, mean_px, candidates, v, disparity_px->ptr<float>(v),
-             subpixel_px != nullptr ? subpixel_px->ptr<float>(v) : nullptr);
+    float* subpixel = subpixel_px != nullptr ? subpixel_px->ptr<float>(v) : nullptr;
+    if (view_right) {
+      matchRow<true>(ref, other, mean_px, candidates, v, disparity_px->ptr<float>(v), subpixel);
+    } else {
+      matchRow<false>(ref, other, mean_px, candidates, v, disparity_px->ptr<float>(v), subpixel);
+    }
   }
 }
 
@@ -134,36 +144,50 @@ void ElasDenseMatcher::match(const ElasDescriptorImage& ref, const ElasDescripto
 // support candidate, then the smaller disparity. That is the candidate a scan of the band and then of
 // the supports in increasing d with strict improvement picks, found without a branch per candidate
 // (the data-dependent branch of that scan was mispredicted on about every other candidate).
-inline float ElasDenseMatcher::matchPixel(const std::uint8_t* ref_row, const std::uint8_t* other_row, bool view_right,
-                                   int width, float mu, const std::uint64_t* cell, int words, int u,
-                                   float* subpixel) const {
+template <bool kViewRight>
+inline float ElasDenseMatcher::matchPixel(const std::uint8_t* ref_row, const std::uint8_t* other_row, int width,
+                                          float mu, const std::uint64_t* cell, int words, int u,
+                                          float* subpixel) const {
   constexpr std::ptrdiff_t kBytes = ElasDescriptorImage::kBytes;
+  constexpr std::ptrdiff_t kDir = kViewRight ? kBytes : -kBytes;  // other pixel = u + (+-) d
   constexpr int kSupportClass = 256;
   constexpr int kCachedBand = 16;  // band costs kept for the sub-pixel step (the band is 2 sradius + 1 wide)
   const std::uint8_t* f_ref = ref_row + u * kBytes;
   if (descriptorTexture(f_ref) < params_.match_texture) return -1.0f;
-  const std::ptrdiff_t dir = view_right ? kBytes : -kBytes;  // other pixel = u + (+-) d
-  const std::uint8_t* f_other = other_row + u * kBytes;      // at d = 0
-  const int d_last = std::min(params_.num_disparities - 1, view_right ? width - 1 - u : u);
+  const std::uint8_t* f_other = other_row + u * kBytes;  // at d = 0
+  const int d_last = std::min(params_.num_disparities - 1, kViewRight ? width - 1 - u : u);
   int best_key = INT_MAX;
   int band_cost[kCachedBand];
-  // 1) the band |d - mu| <= sradius (empty without a prior), with the prior bonus of prepareRow()
-  const int band_lo = band_lo_[u], band_hi = band_hi_[u];
-  const std::uint8_t* f = f_other + band_lo * dir;
+  // 1) the band |d - mu| <= sradius (empty without a prior), with the prior bonus of prepareRow();
+  // a band wider than the prepared slots (float rounding of mu +- sradius) takes bonusIndex()
+  const int band_lo = band_lo_[u];
+  const int band_n = band_hi_[u] - band_lo + 1;
+  const int cached_n = std::min({band_n, band_slots_, kCachedBand});
+  const std::uint8_t* f_lo = f_other + band_lo * kDir;
   const int* bonus_index = bonus_index_.data() + u;
-  for (int d = band_lo; d <= band_hi; ++d, f += dir) {
-    const int k = d - band_lo;
+  for (int k = 0; k < cached_n; ++k) {
+    const int c = sad16(f_ref, f_lo + k * kDir) + prior_bonus_[bonus_index[static_cast<std::ptrdiff_t>(k) * width]];
+    band_cost[k] = c;
+    best_key = std::min(best_key, c * 512 + band_lo + k);
+  }
+  for (int k = std::max(cached_n, 0); k < band_n; ++k) {
+    const int d = band_lo + k;
     const int index = k < band_slots_ ? bonus_index[static_cast<std::ptrdiff_t>(k) * width] : bonusIndex(d, mu);
-    const int c = sad16(f_ref, f) + prior_bonus_[index];
-    if (k < kCachedBand) band_cost[k] = c;
-    best_key = std::min(best_key, c * 512 + d);
+    best_key = std::min(best_key, (sad16(f_ref, f_lo + k * kDir) + prior_bonus_[index]) * 512 + d);
   }
   // 2) the support disparities of the cell outside the band, likelihood only
-  for (int w = 0; w < words && 64 * w <= d_last; ++w) {
-    std::uint64_t m = cell[w] & bitsBetween(64 * w, 0, d_last) & ~bitsBetween(64 * w, band_lo, band_hi);
+  const auto support = [&](std::uint64_t m, int first) {
     for (; m != 0; m &= m - 1) {
-      const int d = 64 * w + std::countr_zero(m);
-      best_key = std::min(best_key, sad16(f_ref, f_other + d * dir) * 512 + kSupportClass + d);
+      const int d = first + std::countr_zero(m);
+      best_key = std::min(best_key, sad16(f_ref, f_other + d * kDir) * 512 + kSupportClass + d);
+    }
+  };
+  if (words == 1) {
+    support(cell[0] & bitsUpTo(d_last) & ~bitsFrom(band_lo, band_n), 0);
+  } else {
+    for (int w = 0; w < words && 64 * w <= d_last; ++w) {
+      support(cell[w] & bitsBetween(64 * w, 0, d_last) & ~bitsBetween(64 * w, band_lo, band_lo + band_n - 1),
+              64 * w);
     }
   }
   if (best_key == INT_MAX) return -1.0f;
@@ -172,8 +196,9 @@ inline float ElasDenseMatcher::matchPixel(const std::uint8_t* ref_row, const std
     const int best_cost = best_key >> 9;  // arithmetic shift: floor(key / 512), also for negative costs
     // cost with the prior bonus of a neighbour of best_d: from the band when it was there
     const auto cost = [&](int d) {
-      if (d >= band_lo && d <= band_hi && d - band_lo < kCachedBand) return band_cost[d - band_lo];
-      return sad16(f_ref, f_other + d * dir) + priorBonus(d, mu);
+      const int k = d - band_lo;
+      if (k >= 0 && k < cached_n) return band_cost[k];
+      return sad16(f_ref, f_other + d * kDir) + priorBonus(d, mu);
     };
     subpixel[u] = 0.0f;
     if (best_d > 0 && best_d < d_last) {
@@ -190,12 +215,13 @@ inline float ElasDenseMatcher::matchPixel(const std::uint8_t* ref_row, const std
 }
 
 // The row is walked cell by cell of the candidate grid (no division per pixel).
+template <bool kViewRight>
 void ElasDenseMatcher::matchRow(const ElasDescriptorImage& ref, const ElasDescriptorImage& other,
-                                bool view_right, const cv::Mat& mean_px,
-                                const ElasCandidates& candidates, int v, float* out,
+                                const cv::Mat& mean_px, const ElasCandidates& candidates, int v, float* out,
                                 float* subpixel) const {
   const int width = ref.width();
   const int grid = candidates.gridSize();
+  const int words = candidates.words();
   const float* mean_row = mean_px.ptr<float>(v);
   const std::uint8_t* ref_row = ref.at(0, v);
   const std::uint8_t* other_row = other.at(0, v);
@@ -203,8 +229,7 @@ void ElasDenseMatcher::matchRow(const ElasDescriptorImage& ref, const ElasDescri
     const std::uint64_t* cell = candidates.cellMask(u0, v);
     const int u1 = std::min(width, u0 + grid);
     for (int u = u0; u < u1; ++u) {
-      out[u] = matchPixel(ref_row, other_row, view_right, width, mean_row[u], cell, candidates.words(), u,
-                          subpixel);
+      out[u] = matchPixel<kViewRight>(ref_row, other_row, width, mean_row[u], cell, words, u, subpixel);
     }
   }
 }

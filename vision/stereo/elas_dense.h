@@ -32,12 +32,13 @@ class ElasDenseMatcher {
   // disparities, 4 pixels at a time in float lanes (the same float operations as priorBonus()).
   void prepareRow(const float* mean_row, bool view_right, int width);
   void prepareRange(const float* mean_row, bool view_right, int width, int u_begin, int u_end);
-  void matchRow(const ElasDescriptorImage& ref, const ElasDescriptorImage& other, bool view_right,
-                const cv::Mat& mean_px, const ElasCandidates& candidates, int v, float* out,
-                float* subpixel) const;
+  template <bool kViewRight>
+  void matchRow(const ElasDescriptorImage& ref, const ElasDescriptorImage& other, const cv::Mat& mean_px,
+                const ElasCandidates& candidates, int v, float* out, float* subpixel) const;
   // The disparity of ref pixel u (-1 when none) and, when subpixel is not null, subpixel[u].
-  float matchPixel(const std::uint8_t* ref_row, const std::uint8_t* other_row, bool view_right, int width,
-                   float mu, const std::uint64_t* cell, int words, int u, float* subpixel) const;
+  template <bool kViewRight>
+  float matchPixel(const std::uint8_t* ref_row, const std::uint8_t* other_row, int width, float mu,
+                   const std::uint64_t* cell, int words, int u, float* subpixel) const;
   int priorBonus(int d, float mu) const;
   int bonusIndex(int d, float mu) const;
 

@@ -14,7 +14,7 @@ void addSubpixel(const cv::Mat& subpixel_px, cv::Mat* disparity_px) {
     float* d = disparity_px->ptr<float>(v);
     const float* s = subpixel_px.ptr<float>(v);
     for (int u = 0; u < disparity_px->cols; ++u) {
-      if (d[u] >= 0.0f) d[u] = std::max(0.0f, d[u] + s[u]);
+      d[u] = d[u] >= 0.0f ? std::max(0.0f, d[u] + s[u]) : d[u];  // a select, no branch
     }
   }
 }
