@@ -49,6 +49,59 @@ int PlaneExtractor::extract(const OrganizedCloud& cloud, PlaneSet* planes) {
   return regions < 0 ? -1 : fitAndTrace(grower_, regions, cloud, planes);
 }
 
+void PlaneExtractor::feedFits(const PlaneRegionGrower& grower, const OrganizedCloud& cloud) {
+  // One raster pass feeds every plane's fit (sequential reads of the cloud) and bounding box
+  // (x, y: the smallest column and row; width, height: the largest, made sizes below).
+  const cv::Mat& labels = grower.labels();
+  for (int r = 0; r < cloud.rows(); ++r) {
+    const std::uint8_t* l = labels.ptr<std::uint8_t>(r);
+    const cv::Vec3f* p = cloud.row(r);
+    for (int c = 0; c < cloud.cols();) {
+      const std::uint8_t label = l[c];
+      int end = c + 1;
+      while (end < cloud.cols() && l[end] == label) ++end;
+      if (label != 0) {
+        fits_[region_of_label_[label]].addRun(p + c, end - c);
+        cv::Rect& box = bbox_of_label_[label];
+        box.x = std::min(box.x, c);
+        box.y = std::min(box.y, r);
+        box.width = std::max(box.width, end - 1);
+        box.height = r;  // rows are visited in order
+      }
+      c = end;
+    }
+  }
+}
+
+// Tile by tile (the cells of a tile hold at most the labels of it and its neighbours): the
+// moments in float lanes per tile (PlaneFitAccumulator::addTile), the boxes from the tiles' boxes.
+// bbox_of_label_ as in the raster pass: x, y the smallest column and row, width, height the
+// largest.
+void PlaneExtractor::feedFits(const PlaneTileGrower& grower, const OrganizedCloud& cloud) {
+  const std::uint8_t* labels = grower.labels().ptr<std::uint8_t>(0);
+  const cv::Vec3f* points = cloud.row(0);
+  std::array<std::uint8_t, 9> tile_labels{};
+  for (int t = 0; t < grower.tileCount(); ++t) {
+    const int count = grower.tileLabels(t, &tile_labels);
+    const TileView& view = grower.tileView(t);
+    const std::ptrdiff_t offset = view.points - points;
+    const int r = static_cast<int>(offset / cloud.cols());
+    const int c = static_cast<int>(offset % cloud.cols());
+    for (int j = 0; j < count; ++j) {
+      const std::uint8_t label = tile_labels[j];
+      const cv::Rect box = fits_[region_of_label_[label]].addTile(
+          view, grower.tileRef(t), grower.tileLow(t), grower.tileHigh(t), labels + offset,
+          cloud.cols(), label);
+      if (box.empty()) continue;
+      cv::Rect& b = bbox_of_label_[label];
+      b.x = std::min(b.x, c + box.x);
+      b.y = std::min(b.y, r + box.y);
+      b.width = std::max(b.width, c + box.x + box.width - 1);
+      b.height = std::max(b.height, r + box.y + box.height - 1);
+    }
+  }
+}
+
 template <class Grower>
 int PlaneExtractor::fitAndTrace(const Grower& grower, int regions, const OrganizedCloud& cloud,
                                 PlaneSet* planes) {
@@ -71,30 +124,10 @@ int PlaneExtractor::fitAndTrace(const Grower& grower, int regions, const Organiz
     }
     fits_[i].reset(region.sums, region.normal, noise_, band);
   }
-  // One raster pass feeds every plane's fit (sequential reads of the cloud) and bounding box
-  // (x, y: the smallest column and row; width, height: the largest, made sizes below).
-  const cv::Mat& labels = grower.labels();
   for (int i = 0; i < regions; ++i) {
     bbox_of_label_[grower.region(i).label] = cv::Rect(cloud.cols(), cloud.rows(), -1, -1);
   }
-  for (int r = 0; r < cloud.rows(); ++r) {
-    const std::uint8_t* l = labels.ptr<std::uint8_t>(r);
-    const cv::Vec3f* p = cloud.row(r);
-    for (int c = 0; c < cloud.cols();) {
-      const std::uint8_t label = l[c];
-      int end = c + 1;
-      while (end < cloud.cols() && l[end] == label) ++end;
-      if (label != 0) {
-        fits_[region_of_label_[label]].addRun(p + c, end - c);
-        cv::Rect& box = bbox_of_label_[label];
-        box.x = std::min(box.x, c);
-        box.y = std::min(box.y, r);
-        box.width = std::max(box.width, end - 1);
-        box.height = r;  // rows are visited in order
-      }
-      c = end;
-    }
-  }
+  feedFits(grower, cloud);
   for (int i = 0; i < regions; ++i) {
     const PlaneRegion& region = grower.region(i);
     Plane* plane = planes->addPlane();

@@ -41,6 +41,11 @@ class PlaneExtractor {
   int fitAndTrace(const Grower& grower, int regions, const OrganizedCloud& cloud,
                   PlaneSet* planes);
 
+  // Every region's cells into fits_ and bbox_of_label_: one raster pass over the labels
+  // (bit for bit the sums of the pixel grower's fit), or tile by tile (the tile grower).
+  void feedFits(const PlaneRegionGrower& grower, const OrganizedCloud& cloud);
+  void feedFits(const PlaneTileGrower& grower, const OrganizedCloud& cloud);
+
   bool ready_ = false;
   PlaneExtractionConfig config_;
   PlaneNoiseModel noise_;

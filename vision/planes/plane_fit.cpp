@@ -88,7 +88,85 @@ unsigned PlaneFitAccumulator::bandMask4(const cv::Vec3f* p, float* w) const {
   return static_cast<unsigned>(cv::v_signmask(in_band));
 }
 
+// |d0 (n_j.p) - d_j (n0.p)| = |m.p| with m = d0 n_j - d_j n0 is linear in p: over the box its
+// smallest value is |m.c| - |m|.h (c the centre, h the half sizes, |m| taken per component),
+// and the right-hand side band_m |n0.p| + s_j p_z is at most band_m (|n0.c| + |n0|.h) + s_j z_hi.
+int PlaneFitAccumulator::neighboursNear(const cv::Vec3f& lo, const cv::Vec3f& hi,
+                                        int* active) const {
+  const Eigen::Vector3f l(lo[0], lo[1], lo[2]), h(hi[0], hi[1], hi[2]);
+  const Eigen::Vector3f c = 0.5f * (l + h), half = 0.5f * (h - l);
+  const float np_max = std::abs(n0_.dot(c)) + n0_.cwiseAbs().dot(half);
+  int count = 0;
+  for (int j = 0; j < neighbour_count_; ++j) {
+    const Eigen::Vector3f m = d0_n_[j] - d_[j] * n0_;
+    const float lhs_min = std::abs(m.dot(c)) - m.cwiseAbs().dot(half);
+    const float rhs_max = band_m_ * np_max + sigma_coeff_[j] * hi[2];
+    if (!(lhs_min > 1.01f * rhs_max + 1e-6f)) active[count++] = j;  // margin for rounding
+  }
+  return count;
+}
+
+cv::v_float32x4 PlaneFitAccumulator::bandLanes(const cv::v_float32x4& x, const cv::v_float32x4& y,
+                                               const cv::v_float32x4& z, const int* active,
+                                               int count) const {
+  auto lane = [](const std::array<float, 4>& a) { return cv::v_load(a.data()); };
+  cv::v_float32x4 in_band = cv::v_setzero_f32();
+  if (count == 0) return in_band;
+  const cv::v_float32x4 np = lane(lanes_[2]) * x + lane(lanes_[3]) * y + lane(lanes_[4]) * z;
+  const cv::v_float32x4 band = lane(lanes_[5]) * cv::v_abs(np);
+  for (int i = 0; i < count; ++i) {
+    const auto& m = neighbour_lanes_[active[i]];
+    const cv::v_float32x4 lhs =
+        cv::v_abs(lane(m[0]) * x + lane(m[1]) * y + lane(m[2]) * z - lane(m[3]) * np);
+    in_band = in_band | (lhs <= band + lane(m[4]) * z);
+  }
+  return in_band;
+}
+
 namespace {
+
+// Moments of the fitted cells in float lanes (addTile), relative to the tile's ref.
+struct MomentLanes {
+  cv::v_float32x4 n = cv::v_setzero_f32(), x = cv::v_setzero_f32(), y = cv::v_setzero_f32(),
+                  z = cv::v_setzero_f32(), xx = cv::v_setzero_f32(), xy = cv::v_setzero_f32(),
+                  xz = cv::v_setzero_f32(), yy = cv::v_setzero_f32(), yz = cv::v_setzero_f32(),
+                  zz = cv::v_setzero_f32();
+  void add(const cv::v_float32x4& mask, cv::v_float32x4 qx, cv::v_float32x4 qy,
+           cv::v_float32x4 qz) {
+    const cv::v_float32x4 zero = cv::v_setzero_f32();
+    n = n + cv::v_select(mask, cv::v_setall_f32(1.0f), zero);
+    qx = cv::v_select(mask, qx, zero);
+    qy = cv::v_select(mask, qy, zero);
+    qz = cv::v_select(mask, qz, zero);
+    x = x + qx;
+    y = y + qy;
+    z = z + qz;
+    xx = cv::v_fma(qx, qx, xx);
+    xy = cv::v_fma(qx, qy, xy);
+    xz = cv::v_fma(qx, qz, xz);
+    yy = cv::v_fma(qy, qy, yy);
+    yz = cv::v_fma(qy, qz, yz);
+    zz = cv::v_fma(qz, qz, zz);
+  }
+  // weight * (sums of q + delta), in double.
+  WeightedMoments weighted(double weight, const Eigen::Vector3d& delta) const {
+    const double N = cv::v_reduce_sum(n), sx = cv::v_reduce_sum(x), sy = cv::v_reduce_sum(y),
+                 sz = cv::v_reduce_sum(z);
+    const double dx = delta.x(), dy = delta.y(), dz = delta.z();
+    WeightedMoments m;
+    m.w = weight * N;
+    m.x = weight * (sx + N * dx);
+    m.y = weight * (sy + N * dy);
+    m.z = weight * (sz + N * dz);
+    m.xx = weight * (cv::v_reduce_sum(xx) + 2.0 * dx * sx + N * dx * dx);
+    m.xy = weight * (cv::v_reduce_sum(xy) + dx * sy + dy * sx + N * dx * dy);
+    m.xz = weight * (cv::v_reduce_sum(xz) + dx * sz + dz * sx + N * dx * dz);
+    m.yy = weight * (cv::v_reduce_sum(yy) + 2.0 * dy * sy + N * dy * dy);
+    m.yz = weight * (cv::v_reduce_sum(yz) + dy * sz + dz * sy + N * dy * dz);
+    m.zz = weight * (cv::v_reduce_sum(zz) + 2.0 * dz * sz + N * dz * dz);
+    return m;
+  }
+};
 
 #if CV_SIMD128_64F
 // WeightedMoments in five SIMD pairs, (w, x) (y, z) (xx, xy) (xz, yy) (yz, zz): every lane gets
@@ -169,6 +247,64 @@ void PlaneFitAccumulator::addRun(const cv::Vec3f* p, int count) {
   sa_.merge(sa);
 #endif
   fitted_ += fitted;
+}
+
+cv::Rect PlaneFitAccumulator::addTile(const TileView& tile, const cv::Vec3f& ref,
+                                      const cv::Vec3f& lo, const cv::Vec3f& hi,
+                                      const std::uint8_t* labels, int label_stride,
+                                      std::uint8_t label) {
+  std::array<int, kMaxNeighbours> active{};
+  const int active_count = neighboursNear(lo, hi, active.data());
+  MomentLanes lanes;
+  const cv::v_uint32x4 wanted = cv::v_setall_u32(label);
+  const cv::v_float32x4 rx = cv::v_setall_f32(ref[0]), ry = cv::v_setall_f32(ref[1]),
+                        rz = cv::v_setall_f32(ref[2]);
+  int r0 = tile.rows, r1 = -1, c0 = tile.cols, c1 = -1;
+  for (int r = 0; r < tile.rows; ++r) {
+    const cv::Vec3f* p = tile.points + static_cast<std::ptrdiff_t>(r) * tile.stride;
+    const std::uint8_t* l = labels + r * label_stride;
+    for (int c = 0; c < tile.cols; c += 4) {
+      cv::v_float32x4 x, y, z, mine;
+      if (c + 4 <= tile.cols) {
+        cv::v_load_deinterleave(&p[c][0], x, y, z);
+        mine = cv::v_reinterpret_as_f32(cv::v_load_expand_q(l + c) == wanted);
+      } else {  // the last columns of a partial tile: the missing lanes are not mine
+        alignas(16) float px[4] = {}, py[4] = {}, pz[4] = {};
+        alignas(16) unsigned ok[4] = {};
+        for (int k = 0; c + k < tile.cols; ++k) {
+          px[k] = p[c + k][0];
+          py[k] = p[c + k][1];
+          pz[k] = p[c + k][2];
+          ok[k] = l[c + k] == label ? ~0u : 0u;
+        }
+        x = cv::v_load_aligned(px);
+        y = cv::v_load_aligned(py);
+        z = cv::v_load_aligned(pz);
+        mine = cv::v_reinterpret_as_f32(cv::v_load_aligned(ok));
+      }
+      const unsigned bits = static_cast<unsigned>(cv::v_signmask(mine));
+      if (bits == 0u) continue;
+      r0 = std::min(r0, r);
+      r1 = r;
+      c0 = std::min(c0, c + __builtin_ctz(bits));
+      c1 = std::max(c1, c + 31 - __builtin_clz(bits));
+      lanes.add(mine & ~bandLanes(x, y, z, active.data(), active_count), x - rx, y - ry, z - rz);
+    }
+  }
+  if (r1 < 0) return cv::Rect();
+  // One weight per tile, at the mean Z^2 of its fitted cells (Z varies by a few per cent over
+  // a tile): w = 1 / (k^2 Z^2 + floor^2), and a = w kd^2 Z^2 for the noise scatter.
+  const double fitted = cv::v_reduce_sum(lanes.n);
+  if (fitted > 0.0) {
+    const double rzd = ref[2];
+    const double z2 = rzd * rzd + (2.0 * rzd * cv::v_reduce_sum(lanes.z) + cv::v_reduce_sum(lanes.zz)) / fitted;
+    const double w = 1.0 / (k_ * k_ * z2 + floor2_);
+    const Eigen::Vector3d delta = Eigen::Vector3d(ref[0], ref[1], ref[2]) - origin_;
+    sw_.merge(lanes.weighted(w, delta));
+    sa_.merge(lanes.weighted(w * kd2_ * z2, delta));
+    fitted_ += static_cast<int>(fitted);
+  }
+  return cv::Rect(c0, r0, c1 - c0 + 1, r1 - r0 + 1);
 }
 
 bool PlaneFitAccumulator::solve(const ScatterSums& sums, int point_count, Plane* plane) const {

@@ -2,10 +2,12 @@
 #include <Eigen/Core>
 #include <array>
 #include <cstdint>
+#include <opencv2/core/hal/intrin.hpp>
 
 #include "vision/cloud/organized_cloud.h"
 #include "vision/planes/plane.h"
 #include "vision/planes/scatter_sums.h"
+#include "vision/planes/tile_sums.h"
 
 namespace deepnav {
 
@@ -107,6 +109,15 @@ class PlaneFitAccumulator {
   // weights four cells at a time (SIMD, the same float operations as the scalar path), the
   // moments summed in registers in cell order, then merged (plane_fit.cpp).
   void addRun(const cv::Vec3f* p, int count);
+  // The cells of one tile whose label is `label` (labels: the tile's first label, row stride
+  // label_stride), for the tile grower: the same neighbour-band test, but the moments summed in
+  // float four lanes at a time relative to the tile's ref, then moved to the origin in double,
+  // and one weight per tile (at the mean Z^2 of its fitted cells) instead of one per cell.
+  // Returns the bounding box of the tile's cells with that label (empty when none).
+  // lo, hi: the box of the tile's points; neighbours whose band cannot reach it are not tested.
+  cv::Rect addTile(const TileView& tile, const cv::Vec3f& ref, const cv::Vec3f& lo,
+                   const cv::Vec3f& hi, const std::uint8_t* labels, int label_stride,
+                   std::uint8_t label);
   // sums: the region's unweighted moments (rms); point_count: the region's cells.
   bool solve(const ScatterSums& sums, int point_count, Plane* plane) const;
 
@@ -115,6 +126,13 @@ class PlaneFitAccumulator {
   // Four cells from p: bit i set when cell i is in a neighbour's band (inNeighbourBand);
   // *w receives their weights 1 / ((k Z)^2 + floor^2).
   unsigned bandMask4(const cv::Vec3f* p, float* w) const;
+  // bandMask4's in-band mask on loaded lanes, without the weights (addTile).
+  // Only the neighbours active[0..count) are tested.
+  cv::v_float32x4 bandLanes(const cv::v_float32x4& x, const cv::v_float32x4& y,
+                            const cv::v_float32x4& z, const int* active, int count) const;
+  // The neighbours whose band may hold a point of the box [lo, hi] (interval bounds of the
+  // inNeighbourBand test over the box); returns their number.
+  int neighboursNear(const cv::Vec3f& lo, const cv::Vec3f& hi, int* active) const;
   void addCell(const cv::Vec3f& p, double w, WeightedMoments* sw, WeightedMoments* sa) const {
     const double x = p[0] - origin_.x(), y = p[1] - origin_.y(), z = p[2] - origin_.z();
     sw->add(x, y, z, w);

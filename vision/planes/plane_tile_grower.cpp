@@ -88,6 +88,7 @@ void PlaneTileGrower::fitTiles(const OrganizedCloud& cloud) {
       }
       if (!found) continue;
       t.sums = sumTile(t.view, t.ref);
+      boundTile(t.view, &t.lo, &t.hi);
       if (t.sums.n < static_cast<float>(min_valid_per_tile_)) continue;
       ScatterSums s;
       s.reset(toDouble(t.ref));
@@ -250,6 +251,14 @@ int PlaneTileGrower::candidatesOf(int tile, std::array<int, 9>* candidates) cons
       add(tiles_[r * tile_cols_ + c].region);
     }
   }
+  return count;
+}
+
+int PlaneTileGrower::tileLabels(int i, std::array<std::uint8_t, 9>* labels) const {
+  if (tiles_[i].sums.n == 0.0f) return 0;
+  std::array<int, 9> candidates{};
+  const int count = candidatesOf(i, &candidates);
+  for (int j = 0; j < count; ++j) (*labels)[j] = regions_[candidates[j]].label;
   return count;
 }
 

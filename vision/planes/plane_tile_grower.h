@@ -43,6 +43,14 @@ class PlaneTileGrower {
   long tilesAdmitted() const { return tiles_admitted_; }  // over all attempts, kept or released
   int tileRows() const { return tile_rows_; }
   int tileCols() const { return tile_cols_; }
+  int tileCount() const { return static_cast<int>(tiles_.size()); }
+  const TileView& tileView(int i) const { return tiles_[i].view; }
+  const cv::Vec3f& tileRef(int i) const { return tiles_[i].ref; }  // a valid point of the tile
+  const cv::Vec3f& tileLow(int i) const { return tiles_[i].lo; }  // box of its valid points
+  const cv::Vec3f& tileHigh(int i) const { return tiles_[i].hi; }
+  // The labels the cells of tile i may hold after growing (its own region's and its 8
+  // neighbours'); returns their number (0 for a tile without points).
+  int tileLabels(int i, std::array<std::uint8_t, 9>* labels) const;
   // Region index of tile (tr, tc) after growing (-1: none).
   int tileRegion(int tr, int tc) const { return tiles_[tr * tile_cols_ + tc].region; }
 
@@ -50,6 +58,7 @@ class PlaneTileGrower {
   struct Tile {
     TileView view;
     cv::Vec3f ref;  // first valid point: origin of the sums
+    cv::Vec3f lo, hi;  // bounding box of the valid points
     TileSums sums;
     Eigen::Vector3d normal = Eigen::Vector3d::UnitZ();
     Eigen::Vector3d centroid = Eigen::Vector3d::Zero();

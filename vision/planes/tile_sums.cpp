@@ -1,5 +1,7 @@
 #include "vision/planes/tile_sums.h"
 
+#include <algorithm>
+#include <limits>
 #include <opencv2/core/hal/intrin.hpp>
 
 namespace deepnav {
@@ -107,6 +109,40 @@ TileSums sumTileLabel(const TileView& tile, const cv::Vec3f& ref, const std::uin
         return cv::v_reinterpret_as_f32(l == wanted);
       },
       [&](int r, int c, const cv::Vec3f&) { return labels[r * label_stride + c] == label; });
+}
+
+void boundTile(const TileView& tile, cv::Vec3f* lo, cv::Vec3f* hi) {
+  const float inf = std::numeric_limits<float>::infinity();
+  const cv::v_float32x4 v_inf = cv::v_setall_f32(inf), v_ninf = cv::v_setall_f32(-inf);
+  const cv::v_float32x4 zero = cv::v_setzero_f32();
+  cv::v_float32x4 lx = v_inf, ly = v_inf, lz = v_inf, hx = v_ninf, hy = v_ninf, hz = v_ninf;
+  cv::Vec3f l(inf, inf, inf), h(-inf, -inf, -inf);
+  for (int r = 0; r < tile.rows; ++r) {
+    const cv::Vec3f* p = tile.points + static_cast<std::ptrdiff_t>(r) * tile.stride;
+    int c = 0;
+    for (; c + 4 <= tile.cols; c += 4) {
+      cv::v_float32x4 x, y, z;
+      cv::v_load_deinterleave(&p[c][0], x, y, z);
+      const cv::v_float32x4 valid = z > zero;
+      lx = cv::v_min(lx, cv::v_select(valid, x, v_inf));
+      ly = cv::v_min(ly, cv::v_select(valid, y, v_inf));
+      lz = cv::v_min(lz, cv::v_select(valid, z, v_inf));
+      hx = cv::v_max(hx, cv::v_select(valid, x, v_ninf));
+      hy = cv::v_max(hy, cv::v_select(valid, y, v_ninf));
+      hz = cv::v_max(hz, cv::v_select(valid, z, v_ninf));
+    }
+    for (; c < tile.cols; ++c) {
+      if (p[c][2] <= 0.0f) continue;
+      for (int k = 0; k < 3; ++k) {
+        l[k] = std::min(l[k], p[c][k]);
+        h[k] = std::max(h[k], p[c][k]);
+      }
+    }
+  }
+  *lo = cv::Vec3f(std::min(l[0], cv::v_reduce_min(lx)), std::min(l[1], cv::v_reduce_min(ly)),
+                  std::min(l[2], cv::v_reduce_min(lz)));
+  *hi = cv::Vec3f(std::max(h[0], cv::v_reduce_max(hx)), std::max(h[1], cv::v_reduce_max(hy)),
+                  std::max(h[2], cv::v_reduce_max(hz)));
 }
 
 void addTileSums(const TileSums& t, const cv::Vec3f& ref, ScatterSums* s) {

@@ -31,6 +31,9 @@ TileSums sumTile(const TileView& tile, const cv::Vec3f& ref);
 TileSums sumTileLabel(const TileView& tile, const cv::Vec3f& ref, const std::uint8_t* labels,
                       int label_stride, std::uint8_t label);
 
+// Bounding box of the tile's valid points (lo > hi when it has none).
+void boundTile(const TileView& tile, cv::Vec3f* lo, cv::Vec3f* hi);
+
 // Adds the tile's sums (relative to ref) to *sums (relative to sums->origin), in double:
 // q = (p - ref) + delta with delta = ref - origin.
 void addTileSums(const TileSums& tile, const cv::Vec3f& ref, ScatterSums* sums);
