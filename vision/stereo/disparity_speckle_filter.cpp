@@ -35,11 +35,15 @@ int DisparitySpeckleFilter::floodSegment(const cv::Mat& disparity_px, int seed, 
     const int i = stack_[--top];
     members_[size++] = i;
     const float d_i = d[i];
-    // left, right, up, down, the order of a plain neighbour list
+    // left, right, up, down, the order of a plain neighbour list. Without a branch on the pixel
+    // values (they decide at random inside noisy areas): the neighbour is always written above the
+    // top of the stack, and the top only moves over it when it joins the segment.
     const auto visit = [&](int n, int un) {
-      if (label_[n] != 0 || d[n] < 0.0f || std::fabs(d[n] - d_i) > sim_px) return;
-      label_[n] = label;
-      push(n, un);
+      const bool joins = (label_[n] == 0) & (d[n] >= 0.0f) & (std::fabs(d[n] - d_i) <= sim_px);
+      label_[n] = joins ? label : label_[n];
+      stack_[top] = n;
+      stack_[top + 1] = un;
+      top += joins ? 2 : 0;
     };
     if (u > 0) visit(i - 1, u - 1);
     if (u + 1 < width_px_) visit(i + 1, u + 1);
