@@ -145,7 +145,7 @@ void ElasDenseMatcher::match(const ElasDescriptorImage& ref, const ElasDescripto
 // the supports in increasing d with strict improvement picks, found without a branch per candidate
 // (the data-dependent branch of that scan was mispredicted on about every other candidate).
 template <bool kViewRight>
-inline float ElasDenseMatcher::matchPixel(const std::uint8_t* ref_row, const std::uint8_t* other_row, int width,
+[[gnu::always_inline]] inline float ElasDenseMatcher::matchPixel(const std::uint8_t* ref_row, const std::uint8_t* other_row, int width,
                                           float mu, const std::uint64_t* cell, int words, int u,
                                           float* subpixel) const {
   constexpr std::ptrdiff_t kBytes = ElasDescriptorImage::kBytes;
