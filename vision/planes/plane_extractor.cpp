@@ -87,6 +87,19 @@ void PlaneExtractor::feedFits(const PlaneTileGrower& grower, const OrganizedClou
     const std::ptrdiff_t offset = view.points - points;
     const int r = static_cast<int>(offset / cloud.cols());
     const int c = static_cast<int>(offset % cloud.cols());
+    // A tile wholly of one plane, every cell valid and no neighbouring plane's band near: its
+    // moments are the grower's, its box the tile's.
+    const std::uint8_t whole = grower.tileWholeLabel(t);
+    if (whole != 0 && grower.tileSums(t).n == static_cast<float>(view.rows * view.cols) &&
+        fits_[region_of_label_[whole]].addWholeTile(grower.tileSums(t), grower.tileRef(t),
+                                                    grower.tileLow(t), grower.tileHigh(t))) {
+      cv::Rect& b = bbox_of_label_[whole];
+      b.x = std::min(b.x, c);
+      b.y = std::min(b.y, r);
+      b.width = std::max(b.width, c + view.cols - 1);
+      b.height = std::max(b.height, r + view.rows - 1);
+      continue;
+    }
     for (int j = 0; j < count; ++j) {
       const std::uint8_t label = tile_labels[j];
       const cv::Rect box = fits_[region_of_label_[label]].addTile(

@@ -148,25 +148,31 @@ struct MomentLanes {
     yz = cv::v_fma(qy, qz, yz);
     zz = cv::v_fma(qz, qz, zz);
   }
-  // weight * (sums of q + delta), in double.
-  WeightedMoments weighted(double weight, const Eigen::Vector3d& delta) const {
-    const double N = cv::v_reduce_sum(n), sx = cv::v_reduce_sum(x), sy = cv::v_reduce_sum(y),
-                 sz = cv::v_reduce_sum(z);
-    const double dx = delta.x(), dy = delta.y(), dz = delta.z();
-    WeightedMoments m;
-    m.w = weight * N;
-    m.x = weight * (sx + N * dx);
-    m.y = weight * (sy + N * dy);
-    m.z = weight * (sz + N * dz);
-    m.xx = weight * (cv::v_reduce_sum(xx) + 2.0 * dx * sx + N * dx * dx);
-    m.xy = weight * (cv::v_reduce_sum(xy) + dx * sy + dy * sx + N * dx * dy);
-    m.xz = weight * (cv::v_reduce_sum(xz) + dx * sz + dz * sx + N * dx * dz);
-    m.yy = weight * (cv::v_reduce_sum(yy) + 2.0 * dy * sy + N * dy * dy);
-    m.yz = weight * (cv::v_reduce_sum(yz) + dy * sz + dz * sy + N * dy * dz);
-    m.zz = weight * (cv::v_reduce_sum(zz) + 2.0 * dz * sz + N * dz * dz);
-    return m;
+  TileSums reduce() const {
+    return TileSums{cv::v_reduce_sum(n),  cv::v_reduce_sum(x),  cv::v_reduce_sum(y),
+                    cv::v_reduce_sum(z),  cv::v_reduce_sum(xx), cv::v_reduce_sum(xy),
+                    cv::v_reduce_sum(xz), cv::v_reduce_sum(yy), cv::v_reduce_sum(yz),
+                    cv::v_reduce_sum(zz)};
   }
 };
+
+// weight * (moments of q + delta), in double, from a tile's moments of q.
+WeightedMoments weightedShifted(const TileSums& t, double weight, const Eigen::Vector3d& delta) {
+  const double N = t.n, sx = t.sx, sy = t.sy, sz = t.sz;
+  const double dx = delta.x(), dy = delta.y(), dz = delta.z();
+  WeightedMoments m;
+  m.w = weight * N;
+  m.x = weight * (sx + N * dx);
+  m.y = weight * (sy + N * dy);
+  m.z = weight * (sz + N * dz);
+  m.xx = weight * (t.sxx + 2.0 * dx * sx + N * dx * dx);
+  m.xy = weight * (t.sxy + dx * sy + dy * sx + N * dx * dy);
+  m.xz = weight * (t.sxz + dx * sz + dz * sx + N * dx * dz);
+  m.yy = weight * (t.syy + 2.0 * dy * sy + N * dy * dy);
+  m.yz = weight * (t.syz + dy * sz + dz * sy + N * dy * dz);
+  m.zz = weight * (t.szz + 2.0 * dz * sz + N * dz * dz);
+  return m;
+}
 
 #if CV_SIMD128_64F
 // WeightedMoments in five SIMD pairs, (w, x) (y, z) (xx, xy) (xz, yy) (yz, zz): every lane gets
@@ -292,19 +298,29 @@ cv::Rect PlaneFitAccumulator::addTile(const TileView& tile, const cv::Vec3f& ref
     }
   }
   if (r1 < 0) return cv::Rect();
-  // One weight per tile, at the mean Z^2 of its fitted cells (Z varies by a few per cent over
-  // a tile): w = 1 / (k^2 Z^2 + floor^2), and a = w kd^2 Z^2 for the noise scatter.
-  const double fitted = cv::v_reduce_sum(lanes.n);
-  if (fitted > 0.0) {
-    const double rzd = ref[2];
-    const double z2 = rzd * rzd + (2.0 * rzd * cv::v_reduce_sum(lanes.z) + cv::v_reduce_sum(lanes.zz)) / fitted;
-    const double w = 1.0 / (k_ * k_ * z2 + floor2_);
-    const Eigen::Vector3d delta = Eigen::Vector3d(ref[0], ref[1], ref[2]) - origin_;
-    sw_.merge(lanes.weighted(w, delta));
-    sa_.merge(lanes.weighted(w * kd2_ * z2, delta));
-    fitted_ += static_cast<int>(fitted);
-  }
+  addTileMoments(lanes.reduce(), ref);
   return cv::Rect(c0, r0, c1 - c0 + 1, r1 - r0 + 1);
+}
+
+// One weight per tile, at the mean Z^2 of its fitted cells (Z varies by a few per cent over a
+// tile): w = 1 / (k^2 Z^2 + floor^2), and a = w kd^2 Z^2 for the noise scatter.
+void PlaneFitAccumulator::addTileMoments(const TileSums& t, const cv::Vec3f& ref) {
+  if (t.n <= 0.0f) return;
+  const double rz = ref[2];
+  const double z2 = rz * rz + (2.0 * rz * t.sz + t.szz) / t.n;
+  const double w = 1.0 / (k_ * k_ * z2 + floor2_);
+  const Eigen::Vector3d delta = Eigen::Vector3d(ref[0], ref[1], ref[2]) - origin_;
+  sw_.merge(weightedShifted(t, w, delta));
+  sa_.merge(weightedShifted(t, w * kd2_ * z2, delta));
+  fitted_ += static_cast<int>(t.n);
+}
+
+bool PlaneFitAccumulator::addWholeTile(const TileSums& sums, const cv::Vec3f& ref,
+                                       const cv::Vec3f& lo, const cv::Vec3f& hi) {
+  std::array<int, kMaxNeighbours> active{};
+  if (neighboursNear(lo, hi, active.data()) > 0) return false;
+  addTileMoments(sums, ref);
+  return true;
 }
 
 bool PlaneFitAccumulator::solve(const ScatterSums& sums, int point_count, Plane* plane) const {

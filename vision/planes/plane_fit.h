@@ -118,6 +118,11 @@ class PlaneFitAccumulator {
   cv::Rect addTile(const TileView& tile, const cv::Vec3f& ref, const cv::Vec3f& lo,
                    const cv::Vec3f& hi, const std::uint8_t* labels, int label_stride,
                    std::uint8_t label);
+  // A tile all of whose valid cells are this plane's, from its moments `sums` (relative to ref),
+  // without reading its cells; false (nothing added) when a neighbour's band may reach the box
+  // [lo, hi] of its points: then addTile must test its cells.
+  bool addWholeTile(const TileSums& sums, const cv::Vec3f& ref, const cv::Vec3f& lo,
+                    const cv::Vec3f& hi);
   // sums: the region's unweighted moments (rms); point_count: the region's cells.
   bool solve(const ScatterSums& sums, int point_count, Plane* plane) const;
 
@@ -126,6 +131,8 @@ class PlaneFitAccumulator {
   // Four cells from p: bit i set when cell i is in a neighbour's band (inNeighbourBand);
   // *w receives their weights 1 / ((k Z)^2 + floor^2).
   unsigned bandMask4(const cv::Vec3f* p, float* w) const;
+  // Fitted cells' moments relative to ref, with one weight for the tile (addTile).
+  void addTileMoments(const TileSums& t, const cv::Vec3f& ref);
   // bandMask4's in-band mask on loaded lanes, without the weights (addTile).
   // Only the neighbours active[0..count) are tested.
   cv::v_float32x4 bandLanes(const cv::v_float32x4& x, const cv::v_float32x4& y,

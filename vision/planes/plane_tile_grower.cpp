@@ -342,6 +342,7 @@ int PlaneTileGrower::refineAndSum(const OrganizedCloud& cloud, int regions) {
     if (labelled == 0) continue;
     if (count == 1 && static_cast<float>(labelled) == tile.sums.n) {
       addTileSums(tile.sums, tile.ref, &regions_[candidates[0]].sums);  // every cell joined
+      tiles_[i].whole_label = regions_[candidates[0]].label;
       continue;
     }
     for (int j = 0; j < count; ++j) {
@@ -371,6 +372,7 @@ int PlaneTileGrower::refineAndSum(const OrganizedCloud& cloud, int regions) {
     for (std::size_t i = 0; i < labels_.total(); ++i) labels[i] = relabel[labels[i]];
     for (Tile& tile : tiles_) {
       if (tile.region >= 0) tile.region = new_index[tile.region];
+      tile.whole_label = relabel[tile.whole_label];
     }
   }
   return kept;

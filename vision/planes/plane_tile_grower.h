@@ -48,6 +48,9 @@ class PlaneTileGrower {
   const cv::Vec3f& tileRef(int i) const { return tiles_[i].ref; }  // a valid point of the tile
   const cv::Vec3f& tileLow(int i) const { return tiles_[i].lo; }  // box of its valid points
   const cv::Vec3f& tileHigh(int i) const { return tiles_[i].hi; }
+  const TileSums& tileSums(int i) const { return tiles_[i].sums; }  // relative to tileRef
+  // The label of every valid cell of tile i when they all got the same one, else 0.
+  std::uint8_t tileWholeLabel(int i) const { return tiles_[i].whole_label; }
   // The labels the cells of tile i may hold after growing (its own region's and its 8
   // neighbours'); returns their number (0 for a tile without points).
   int tileLabels(int i, std::array<std::uint8_t, 9>* labels) const;
@@ -65,6 +68,7 @@ class PlaneTileGrower {
     double sum_z2 = 0.0;  // sum of Z^2
     float mse = 0.0f;
     double cos_max_angle = 1.0;  // normal test of this tile against a region
+    std::uint8_t whole_label = 0;  // see tileWholeLabel()
     bool planar = false;
     int region = -1;
     int stamp = 0;  // attempt that last examined the tile
