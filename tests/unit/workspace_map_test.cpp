@@ -2,7 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <vector>
 #include <random>
 #include <sstream>
 
@@ -203,6 +206,95 @@ TEST(WorkspaceMap, OctreeAndKdTreeAgreeAndGridIsAConservativeSuperset) {
   }
   EXPECT_GT(near, 250);
   EXPECT_LT(near, 4750);
+}
+
+// The reference for the map's insertion: every frame's voxels (each once) through OctoMap's eager
+// updateNode, which fixes the parents and prunes after each voxel.
+void insertEagerly(const OrganizedCloud& cloud, const Eigen::Isometry3d& T_odom_cam, const WorkspaceConfig& c,
+                   octomap::OcTree* tree) {
+  const Eigen::Matrix3f R = T_odom_cam.linear().cast<float>();
+  const Eigen::Vector3f t = T_odom_cam.translation().cast<float>();
+  const float range2 = static_cast<float>(c.max_range_m * c.max_range_m);
+  octomap::KeySet keys;
+  for (int r = 0; r < cloud.rows(); r += c.insert_step_cells) {
+    const cv::Vec3f* p = cloud.row(r);
+    for (int col = 0; col < cloud.cols(); col += c.insert_step_cells) {
+      if (!OrganizedCloud::isValid(p[col])) continue;
+      const Eigen::Vector3f p_cam(p[col][0], p[col][1], p[col][2]);
+      if (p_cam.squaredNorm() > range2) continue;
+      const Eigen::Vector3f q = R * p_cam + t;
+      octomap::OcTreeKey key;
+      if (tree->coordToKeyChecked(octomap::point3d(q.x(), q.y(), q.z()), key)) keys.insert(key);
+    }
+  }
+  std::vector<octomap::OcTreeKey> sorted(keys.begin(), keys.end());
+  const auto packed = [](const octomap::OcTreeKey& k) {
+    return std::uint64_t{k[0]} | (std::uint64_t{k[1]} << 16) | (std::uint64_t{k[2]} << 32);
+  };
+  std::sort(sorted.begin(), sorted.end(), [&](const auto& a, const auto& b) { return packed(a) < packed(b); });
+  for (const octomap::OcTreeKey& k : sorted) tree->updateNode(k, true);
+}
+
+// Every node of both trees, in the same order, at the same depth and key, with the same log-odds
+// and the same children: the same tree, pruned the same way.
+int expectSameTree(const octomap::OcTree& a, const octomap::OcTree& b) {
+  int pruned = 0;
+  auto ia = a.begin_tree(), ib = b.begin_tree();
+  for (; ia != a.end_tree() && ib != b.end_tree(); ++ia, ++ib) {
+    EXPECT_EQ(ia.getDepth(), ib.getDepth());
+    EXPECT_EQ(ia.getKey(), ib.getKey());
+    EXPECT_EQ(ia->getLogOdds(), ib->getLogOdds());
+    EXPECT_EQ(a.nodeHasChildren(&*ia), b.nodeHasChildren(&*ib));
+    pruned += ia.isLeaf() && ia.getDepth() < a.getTreeDepth();
+  }
+  EXPECT_TRUE(ia == a.end_tree() && ib == b.end_tree()) << "node counts differ";
+  EXPECT_EQ(a.size(), b.size());
+  return pruned;
+}
+
+// A solid block of points 1.5 m ahead of the camera, one per voxel centre (5 cm voxels), 8x8x8
+// voxels: surfaces never fill a 2x2x2 block of voxels, a solid does, and its nodes prune.
+void fillWithSolidBlock(OrganizedCloud* cloud) {
+  int cell = 0;
+  for (int i = 0; i < 8; ++i) {
+    for (int j = 0; j < 8; ++j) {
+      for (int k = 0; k < 8; ++k, ++cell) {
+        cloud->row(cell / cloud->cols())[cell % cloud->cols()] =
+            cv::Vec3f(0.025f + 0.05f * i, 0.025f + 0.05f * j, 1.525f + 0.05f * k);
+      }
+    }
+  }
+  for (; cell < cloud->rows() * cloud->cols(); ++cell) {
+    OrganizedCloud::invalidate(cloud->row(cell / cloud->cols())[cell % cloud->cols()]);
+  }
+}
+
+TEST(WorkspaceMap, InsertionGivesTheTreeOfEagerOctoMapUpdates) {
+  // GIVEN the workspace seen from six positions, and a solid block seen in every other frame
+  const SyntheticScene scene = workspace();
+  WorkspaceConfig c = config(WorkspaceLookupKind::kGrid);
+  c.insert_step_cells = 1;
+  WorkspaceMap map;
+  ASSERT_TRUE(map.init(c));
+  octomap::OcTree reference(c.resolution_m);
+  reference.setProbHit(map.octree().getProbHit());
+  reference.setProbMiss(map.octree().getProbMiss());
+  reference.setOccupancyThres(map.octree().getOccupancyThres());
+  reference.setClampingThresMax(map.octree().getClampingThresMax());
+  reference.setClampingThresMin(map.octree().getClampingThresMin());
+  // WHEN both take the same frames (each frame is compared, so pruning and re-expansion between frames count)
+  int pruned = 0;
+  for (int k = 0; k < 6; ++k) {
+    const Eigen::Isometry3d T = cameraAt(Eigen::Vector3d(-0.15 + 0.06 * k, 0.0, 0.03 * (k % 3)));
+    Frame f;
+    makeFrame(scene, T, false, &f);
+    if (k % 2 == 1) fillWithSolidBlock(&f.cloud);
+    ASSERT_TRUE(map.insert(f.cloud, T));
+    insertEagerly(f.cloud, T, c, &reference);
+    // THEN the trees are the same node for node
+    pruned = expectSameTree(map.octree(), reference);
+  }
+  EXPECT_GT(pruned, 0) << "no pruned node: the test would not see a pruning difference";
 }
 
 TEST(WorkspaceMap, WriteReadRoundTripKeepsTheOccupiedVoxels) {
