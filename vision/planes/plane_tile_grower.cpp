@@ -87,8 +87,7 @@ void PlaneTileGrower::fitTiles(const OrganizedCloud& cloud) {
         }
       }
       if (!found) continue;
-      t.sums = sumTile(t.view, t.ref);
-      boundTile(t.view, &t.lo, &t.hi);
+      t.sums = sumTile(t.view, t.ref, &t.lo, &t.hi);
       if (t.sums.n < static_cast<float>(min_valid_per_tile_)) continue;
       ScatterSums s;
       s.reset(toDouble(t.ref));

@@ -92,13 +92,6 @@ TileSums sumSelected(const TileView& tile, const cv::Vec3f& ref, Select select,
 
 }  // namespace
 
-TileSums sumTile(const TileView& tile, const cv::Vec3f& ref) {
-  const cv::v_float32x4 zero = cv::v_setzero_f32();
-  return sumSelected(
-      tile, ref, [&](int, int, const cv::v_float32x4& z) { return z > zero; },
-      [](int, int, const cv::Vec3f& p) { return p[2] > 0.0f; });
-}
-
 TileSums sumTileLabel(const TileView& tile, const cv::Vec3f& ref, const std::uint8_t* labels,
                       int label_stride, std::uint8_t label) {
   const cv::v_uint32x4 wanted = cv::v_setall_u32(label);
@@ -111,10 +104,14 @@ TileSums sumTileLabel(const TileView& tile, const cv::Vec3f& ref, const std::uin
       [&](int r, int c, const cv::Vec3f&) { return labels[r * label_stride + c] == label; });
 }
 
-void boundTile(const TileView& tile, cv::Vec3f* lo, cv::Vec3f* hi) {
+TileSums sumTile(const TileView& tile, const cv::Vec3f& ref, cv::Vec3f* lo, cv::Vec3f* hi) {
   const float inf = std::numeric_limits<float>::infinity();
   const cv::v_float32x4 v_inf = cv::v_setall_f32(inf), v_ninf = cv::v_setall_f32(-inf);
   const cv::v_float32x4 zero = cv::v_setzero_f32();
+  const cv::v_float32x4 rx = cv::v_setall_f32(ref[0]), ry = cv::v_setall_f32(ref[1]),
+                        rz = cv::v_setall_f32(ref[2]);
+  LaneSums lanes;
+  TileSums tail;
   cv::v_float32x4 lx = v_inf, ly = v_inf, lz = v_inf, hx = v_ninf, hy = v_ninf, hz = v_ninf;
   cv::Vec3f l(inf, inf, inf), h(-inf, -inf, -inf);
   for (int r = 0; r < tile.rows; ++r) {
@@ -124,6 +121,7 @@ void boundTile(const TileView& tile, cv::Vec3f* lo, cv::Vec3f* hi) {
       cv::v_float32x4 x, y, z;
       cv::v_load_deinterleave(&p[c][0], x, y, z);
       const cv::v_float32x4 valid = z > zero;
+      lanes.add(valid, x - rx, y - ry, z - rz);
       lx = cv::v_min(lx, cv::v_select(valid, x, v_inf));
       ly = cv::v_min(ly, cv::v_select(valid, y, v_inf));
       lz = cv::v_min(lz, cv::v_select(valid, z, v_inf));
@@ -133,6 +131,7 @@ void boundTile(const TileView& tile, cv::Vec3f* lo, cv::Vec3f* hi) {
     }
     for (; c < tile.cols; ++c) {
       if (p[c][2] <= 0.0f) continue;
+      addScalar(p[c], ref, &tail);
       for (int k = 0; k < 3; ++k) {
         l[k] = std::min(l[k], p[c][k]);
         h[k] = std::max(h[k], p[c][k]);
@@ -143,6 +142,9 @@ void boundTile(const TileView& tile, cv::Vec3f* lo, cv::Vec3f* hi) {
                   std::min(l[2], cv::v_reduce_min(lz)));
   *hi = cv::Vec3f(std::max(h[0], cv::v_reduce_max(hx)), std::max(h[1], cv::v_reduce_max(hy)),
                   std::max(h[2], cv::v_reduce_max(hz)));
+  TileSums sums = lanes.reduce();
+  merge(tail, &sums);
+  return sums;
 }
 
 void addTileSums(const TileSums& t, const cv::Vec3f& ref, ScatterSums* s) {

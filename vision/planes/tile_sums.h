@@ -25,14 +25,12 @@ struct TileView {
   int cols = 0;
 };
 
-// Sums of the valid cells (z > 0) of the tile, relative to ref.
-TileSums sumTile(const TileView& tile, const cv::Vec3f& ref);
+// Sums of the valid cells (z > 0) of the tile, relative to ref; *lo, *hi: the bounding box of
+// their points (lo > hi when there are none).
+TileSums sumTile(const TileView& tile, const cv::Vec3f& ref, cv::Vec3f* lo, cv::Vec3f* hi);
 // Sums of the cells whose label (same layout as the points, stride label_stride) equals label.
 TileSums sumTileLabel(const TileView& tile, const cv::Vec3f& ref, const std::uint8_t* labels,
                       int label_stride, std::uint8_t label);
-
-// Bounding box of the tile's valid points (lo > hi when it has none).
-void boundTile(const TileView& tile, cv::Vec3f* lo, cv::Vec3f* hi);
 
 // Adds the tile's sums (relative to ref) to *sums (relative to sums->origin), in double:
 // q = (p - ref) + delta with delta = ref - origin.
