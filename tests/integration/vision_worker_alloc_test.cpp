@@ -247,6 +247,57 @@ TEST_F(VisionWorkerAlloc, DenseStereoPlanesAndMapAllocationsPerPair) {
   EXPECT_EQ(dense_allocations, 0);
 }
 
+// vision.planes_growing=tiles (PlaneTileGrower): on the same murky stage-2 clouds the plane VO finds planes
+// and registers about as often as with the pixel grower, and allocates nothing per pair either.
+TEST_F(VisionWorkerAlloc, TileGrowingPlaneVoFindsPlanesWithoutAllocating) {
+  ASSERT_NE(pairs_, nullptr);
+  VisionPipelineConfig config = visionConfig(setup_);
+  VisionPipeline vision;
+  std::string error;
+  ASSERT_TRUE(vision.init(config, &error)) << error;
+  StereoCloud& dense = vision.dense();
+  OrganizedCloud cloud;
+  ASSERT_TRUE(dense.allocateCloud(&cloud));
+  std::array<PlaneOdometry, 2> plane_vo;  // pixels, tiles
+  for (int m = 0; m < 2; ++m) {
+    PlaneOdometryConfig planes = config.planes;
+    planes.extraction.growing = m == 0 ? PlaneGrowingMethod::kPixels : PlaneGrowingMethod::kTiles;
+    ASSERT_TRUE(plane_vo[m].init(planes, dense.geometry(), dense.rows(), dense.cols(), config.dense.cloud_step_px,
+                                 &error))
+        << error;
+  }
+  std::array<int, 2> with_planes{}, with_vo{};
+  long tile_allocations = 0;
+  int counted = 0;
+  PlaneOdometryOutput out;
+  for (int i = kStage1Pairs; i < kPairs; ++i) {
+    const RenderedPair& p = (*pairs_)[static_cast<std::size_t>(i)];
+    ASSERT_TRUE(dense.compute(p.frame.left, p.frame.right, &cloud));
+    const bool counted_pair = i - kStage1Pairs >= kWarmupPairs;
+    for (int m = 0; m < 2; ++m) {
+      long n = 0;
+      bool vo = false;
+      {
+        Counting counting;
+        vo = plane_vo[m].process(p.frame.t_us, cloud, &out);
+        n = counting.count();
+      }
+      if (!counted_pair) continue;
+      if (m == 1) tile_allocations += n;
+      with_planes[m] += out.planes > 0;
+      with_vo[m] += vo;
+    }
+    counted += counted_pair;
+  }
+  std::printf("pixels: %d pairs with planes, %d with VO; tiles: %d with planes, %d with VO, %.2f allocations per pair "
+              "(%d pairs)\n",
+              with_planes[0], with_vo[0], with_planes[1], with_vo[1],
+              counted ? static_cast<double>(tile_allocations) / counted : 0.0, counted);
+  EXPECT_GT(with_planes[1], 0);
+  EXPECT_GE(with_vo[1], with_vo[0] / 2);
+  EXPECT_EQ(tile_allocations, 0);
+}
+
 // The dense part's halving (vision/cloud/area_halving.h) gives cv::resize's INTER_AREA values bit for bit,
 // on the murky pairs and on noise, grey and colour.
 TEST_F(VisionWorkerAlloc, HalvingEqualsOpenCvAreaResize) {
