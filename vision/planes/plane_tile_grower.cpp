@@ -118,56 +118,56 @@ void PlaneTileGrower::fitTiles(const OrganizedCloud& cloud) {
 }
 
 // Step 2: breadth-first growth over the tile graph from one seed tile.
+// The region's plane refitted from its sums (noise-corrected normal), and the running sums along its
+// normal n, a = n . (p - origin), as in PlaneRegionGrower.
+void PlaneTileGrower::refit(GrowingRegion* r) const {
+  r->n = fitPlane(r->sums, noiseScatter(r->sums, r->sum_z2)).normal;
+  r->d = r->n.dot(r->sums.mean());
+  r->abs_d = std::abs(r->d);
+  const ScatterSums& m = r->sums;
+  Eigen::Matrix3d s;
+  s << m.sxx, m.sxy, m.sxz, m.sxy, m.syy, m.syz, m.sxz, m.syz, m.szz;
+  r->sum_a = r->n.dot(Eigen::Vector3d(m.sx, m.sy, m.sz));
+  r->sum_aa = r->n.dot(s * r->n);
+}
+
+// Normal test, point test on the tile's centroid, region test with the tile's cells, all from moments.
+bool PlaneTileGrower::admits(const GrowingRegion& r, const Tile& t) const {
+  const Eigen::Vector3d& n = r.n;
+  const double kd = noise_per_z2_;
+  if (std::abs(n.dot(t.normal)) < t.cos_max_angle) return false;
+  // point test on the centroid: sigma = sigma_d / (f B) Z |d| (PlaneNoiseModel)
+  if (std::abs(n.dot(t.centroid) - r.d) >
+      config_.max_point_distance_m + config_.distance_sigmas * kd * t.centroid.z() * r.abs_d) {
+    return false;
+  }
+  // region test with the tile's cells: a = n . (q + delta), q relative to the tile's ref
+  const Eigen::Vector3d delta = toDouble(t.ref) - r.sums.origin;
+  const Eigen::Vector3d s1_t(t.sums.sx, t.sums.sy, t.sums.sz);
+  const double nt = t.sums.n;
+  const double n_delta = n.dot(delta);
+  const double n_s = n.dot(s1_t);
+  const double a1 = n_s + nt * n_delta;
+  const double a2 = n.dot(secondMomentOf(t.sums) * n) + 2.0 * n_delta * n_s + nt * n_delta * n_delta;
+  const double n1 = r.sums.n + nt;
+  const double s1 = r.sum_a + a1;
+  const double s2 = r.sum_aa + a2;
+  const double var = kd * kd * r.abs_d * r.abs_d * (r.sum_z2 + t.sum_z2);
+  return s2 * n1 - s1 * s1 <= (config_.max_mse_m2 * n1 + var) * n1;
+}
+
 bool PlaneTileGrower::growRegion(int seed, int region_index) {
   const int attempt = ++attempt_;
   Tile& first = tiles_[seed];
-  ScatterSums sums;
-  sums.reset(toDouble(first.ref));
-  addTileSums(first.sums, first.ref, &sums);
-  double sum_z2 = first.sum_z2;
+  GrowingRegion r;
+  r.sums.reset(toDouble(first.ref));
+  addTileSums(first.sums, first.ref, &r.sums);
+  r.sum_z2 = first.sum_z2;
   first.region = region_index;
   first.stamp = attempt;
   int queue_end = 0;
   queue_[queue_end++] = seed;
-
-  // Running sums along the normal n, a = n . (p - origin), as in PlaneRegionGrower.
-  Eigen::Vector3d n;
-  double d = 0.0, abs_d = 0.0, sum_a = 0.0, sum_aa = 0.0;
-  auto refit = [&]() {
-    n = fitPlane(sums, noiseScatter(sums, sum_z2)).normal;
-    d = n.dot(sums.mean());
-    abs_d = std::abs(d);
-    Eigen::Matrix3d s;
-    s << sums.sxx, sums.sxy, sums.sxz, sums.sxy, sums.syy, sums.syz, sums.sxz, sums.syz, sums.szz;
-    sum_a = n.dot(Eigen::Vector3d(sums.sx, sums.sy, sums.sz));
-    sum_aa = n.dot(s * n);
-  };
-  refit();
-  const double gamma = config_.max_point_distance_m;
-  const double k_sigma = config_.distance_sigmas;
-  const double max_mse = config_.max_mse_m2;
-  const double kd = noise_per_z2_;
-
-  auto admits = [&](const Tile& t) {
-    if (std::abs(n.dot(t.normal)) < t.cos_max_angle) return false;
-    // point test on the centroid: sigma = sigma_d / (f B) Z |d| (PlaneNoiseModel)
-    if (std::abs(n.dot(t.centroid) - d) > gamma + k_sigma * kd * t.centroid.z() * abs_d) {
-      return false;
-    }
-    // region test with the tile's cells: a = n . (q + delta), q relative to the tile's ref
-    const Eigen::Vector3d delta = toDouble(t.ref) - sums.origin;
-    const Eigen::Vector3d s1_t(t.sums.sx, t.sums.sy, t.sums.sz);
-    const double nt = t.sums.n;
-    const double n_delta = n.dot(delta);
-    const double n_s = n.dot(s1_t);
-    const double a1 = n_s + nt * n_delta;
-    const double a2 = n.dot(secondMomentOf(t.sums) * n) + 2.0 * n_delta * n_s + nt * n_delta * n_delta;
-    const double n1 = sums.n + nt;
-    const double s1 = sum_a + a1;
-    const double s2 = sum_aa + a2;
-    const double var = kd * kd * abs_d * abs_d * (sum_z2 + t.sum_z2);
-    return s2 * n1 - s1 * s1 <= (max_mse * n1 + var) * n1;
-  };
+  refit(&r);
 
   for (int head = 0; head < queue_end; ++head) {
     const int tile = queue_[head];
@@ -180,28 +180,28 @@ bool PlaneTileGrower::growRegion(int seed, int region_index) {
       Tile& t = tiles_[next];
       if (t.stamp == attempt) continue;
       t.stamp = attempt;
-      if (!t.planar || t.region >= 0 || !admits(t)) continue;
+      if (!t.planar || t.region >= 0 || !admits(r, t)) continue;
       t.region = region_index;
       queue_[queue_end++] = next;
-      addTileSums(t.sums, t.ref, &sums);
-      sum_z2 += t.sum_z2;
-      refit();  // a few hundred tiles per frame: the 3x3 solve after each is cheap
+      addTileSums(t.sums, t.ref, &r.sums);
+      r.sum_z2 += t.sum_z2;
+      refit(&r);  // a few hundred tiles per frame: the 3x3 solve after each is cheap
     }
   }
   tiles_admitted_ += queue_end;
   // Half the minimum here: the tiles hold a region's interior only, the pixel refinement adds
   // its border cells (a 4400-cell box face had 3200 cells in whole tiles); the full minimum is
   // applied after the refinement.
-  if (2.0 * sums.n < min_cells_) {
+  if (2.0 * r.sums.n < min_cells_) {
     for (int i = 0; i < queue_end; ++i) tiles_[queue_[i]].region = -1;
     return false;
   }
   PlaneRegion& region = regions_[region_index];
   region = PlaneRegion{};
   region.label = static_cast<std::uint8_t>(region_index + 1);
-  region.sums = sums;
-  region.sum_z2 = sum_z2;
-  region.normal = n;
+  region.sums = r.sums;
+  region.sum_z2 = r.sum_z2;
+  region.normal = r.n;
   return true;
 }
 

@@ -82,8 +82,17 @@ class PlaneTileGrower {
     float nx, ny, nz, d, k_per_z;
     std::uint8_t label;
   };
+  // A region while it grows: its sums, its plane and the sums along the plane's normal.
+  struct GrowingRegion {
+    ScatterSums sums;
+    double sum_z2 = 0.0;
+    Eigen::Vector3d n = Eigen::Vector3d::UnitZ();
+    double d = 0.0, abs_d = 0.0, sum_a = 0.0, sum_aa = 0.0;
+  };
   void fitTiles(const OrganizedCloud& cloud);
   bool growRegion(int seed, int region_index);
+  void refit(GrowingRegion* r) const;
+  bool admits(const GrowingRegion& r, const Tile& t) const;
   int refineAndSum(const OrganizedCloud& cloud, int regions);
   int candidatesOf(int tile, std::array<int, 9>* candidates) const;
   int labelTile(const Tile& tile, std::uint8_t* labels, const int* candidates, int count);
