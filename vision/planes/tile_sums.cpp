@@ -4,39 +4,10 @@
 #include <limits>
 #include <opencv2/core/hal/intrin.hpp>
 
+#include "vision/planes/moment_lanes.h"
+
 namespace deepnav {
 namespace {
-
-// Ten running sums, four lanes each; masked lanes add zero.
-struct LaneSums {
-  cv::v_float32x4 n = cv::v_setzero_f32(), x = cv::v_setzero_f32(), y = cv::v_setzero_f32(),
-                  z = cv::v_setzero_f32(), xx = cv::v_setzero_f32(), xy = cv::v_setzero_f32(),
-                  xz = cv::v_setzero_f32(), yy = cv::v_setzero_f32(), yz = cv::v_setzero_f32(),
-                  zz = cv::v_setzero_f32();
-  void add(const cv::v_float32x4& mask, cv::v_float32x4 qx, cv::v_float32x4 qy,
-           cv::v_float32x4 qz) {
-    const cv::v_float32x4 zero = cv::v_setzero_f32();
-    n = n + cv::v_select(mask, cv::v_setall_f32(1.0f), zero);
-    qx = cv::v_select(mask, qx, zero);
-    qy = cv::v_select(mask, qy, zero);
-    qz = cv::v_select(mask, qz, zero);
-    x = x + qx;
-    y = y + qy;
-    z = z + qz;
-    xx = cv::v_fma(qx, qx, xx);
-    xy = cv::v_fma(qx, qy, xy);
-    xz = cv::v_fma(qx, qz, xz);
-    yy = cv::v_fma(qy, qy, yy);
-    yz = cv::v_fma(qy, qz, yz);
-    zz = cv::v_fma(qz, qz, zz);
-  }
-  TileSums reduce() const {
-    return TileSums{cv::v_reduce_sum(n),  cv::v_reduce_sum(x),  cv::v_reduce_sum(y),
-                    cv::v_reduce_sum(z),  cv::v_reduce_sum(xx), cv::v_reduce_sum(xy),
-                    cv::v_reduce_sum(xz), cv::v_reduce_sum(yy), cv::v_reduce_sum(yz),
-                    cv::v_reduce_sum(zz)};
-  }
-};
 
 void addScalar(const cv::Vec3f& p, const cv::Vec3f& ref, TileSums* t) {
   const float x = p[0] - ref[0], y = p[1] - ref[1], z = p[2] - ref[2];
@@ -69,7 +40,7 @@ void merge(const TileSums& o, TileSums* t) {
 template <class Select, class SelectOne>
 TileSums sumSelected(const TileView& tile, const cv::Vec3f& ref, Select select,
                      SelectOne select_one) {
-  LaneSums lanes;
+  MomentLanes lanes;
   TileSums tail;
   const cv::v_float32x4 rx = cv::v_setall_f32(ref[0]), ry = cv::v_setall_f32(ref[1]),
                         rz = cv::v_setall_f32(ref[2]);
@@ -110,7 +81,7 @@ TileSums sumTile(const TileView& tile, const cv::Vec3f& ref, cv::Vec3f* lo, cv::
   const cv::v_float32x4 zero = cv::v_setzero_f32();
   const cv::v_float32x4 rx = cv::v_setall_f32(ref[0]), ry = cv::v_setall_f32(ref[1]),
                         rz = cv::v_setall_f32(ref[2]);
-  LaneSums lanes;
+  MomentLanes lanes;
   TileSums tail;
   cv::v_float32x4 lx = v_inf, ly = v_inf, lz = v_inf, hx = v_ninf, hy = v_ninf, hz = v_ninf;
   cv::Vec3f l(inf, inf, inf), h(-inf, -inf, -inf);
