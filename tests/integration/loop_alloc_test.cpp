@@ -75,8 +75,8 @@ TEST(LoopAllocations, SteadyStateLoopDoesNotAllocate) {
 }
 
 // The vision worker's own stages (frame check, MDM, modality bookkeeping) allocate nothing per pair. The
-// ORB VO and dense stereo call OpenCV functions that allocate internally (cv::FAST, solvePnPRansac,
-// StereoSGBM: vision/orbvo/README.md); they run on the worker thread, never on the nav loop's.
+// ORB VO and dense stereo call OpenCV functions that allocate internally (solvePnPRansac, StereoSGBM:
+// vision/orbvo/README.md); they run on the worker thread, never on the nav loop's.
 TEST(LoopAllocations, VisionPipelineDoesNotAllocatePerFrame) {
   VisionPipeline vision;
   std::string error;

@@ -43,6 +43,39 @@ TEST(OrbVoExtractor, SmoothsInFixedPointOnThisPlatform) {
   EXPECT_TRUE(extractor.smoothsInFixedPoint());  // else every pair pays cv::GaussianBlur again
 }
 
+// FastCornerMap against cv::FAST per cell: the same features and descriptors over a sequence in
+// which the cells' thresholds move (usual, dim, usual again, and the same images mirrored).
+TEST(OrbVoExtractor, CornerMapGivesTheFeaturesOfCvFastPerCell) {
+  OrbExtractorConfig reference_config;
+  reference_config.fast_corner_map = false;
+  GridOrbExtractor corner_map_extractor, reference;
+  ASSERT_TRUE(corner_map_extractor.init(OrbExtractorConfig(), kWidthPx, kHeightPx));
+  ASSERT_TRUE(reference.init(reference_config, kWidthPx, kHeightPx));
+  ASSERT_TRUE(corner_map_extractor.detectsWithCornerMap());
+  EXPECT_FALSE(reference.detectsWithCornerMap());
+  std::vector<cv::Mat> sequence = {sceneImage(0.6), sceneImage(0.1), sceneImage(0.6)};
+  for (int i = 0; i < 3; ++i) {
+    cv::Mat mirrored;
+    cv::flip(sequence[i], mirrored, 1);
+    sequence.push_back(mirrored);
+  }
+  std::vector<OrbFeature> f1, f2;
+  std::vector<OrbDescriptor> d1, d2;
+  for (std::size_t i = 0; i < sequence.size(); ++i) {
+    const int n = corner_map_extractor.extract(sequence[i], &f1, &d1);
+    ASSERT_EQ(n, reference.extract(sequence[i], &f2, &d2)) << "image " << i;
+    ASSERT_GT(n, 100);
+    for (int k = 0; k < n; ++k) {
+      EXPECT_EQ(f1[k].u_px, f2[k].u_px) << "image " << i << " feature " << k;
+      EXPECT_EQ(f1[k].v_px, f2[k].v_px) << "image " << i << " feature " << k;
+      EXPECT_EQ(f1[k].level, f2[k].level);
+      EXPECT_EQ(f1[k].response, f2[k].response);
+      EXPECT_EQ(f1[k].angle_rad, f2[k].angle_rad);
+      EXPECT_EQ(d1[k], d2[k]) << "image " << i << " feature " << k;
+    }
+  }
+}
+
 TEST(OrbVoExtractor, SpreadsFeaturesOverEveryCell) {
   GridOrbExtractor extractor;
   ASSERT_TRUE(extractor.init(OrbExtractorConfig(), kWidthPx, kHeightPx));

@@ -49,6 +49,11 @@ bool GridOrbExtractor::init(const OrbExtractorConfig& config, int width_px, int 
   std::vector<cv::Size> level_sizes;
   for (const cv::Mat& s : smoothed_) level_sizes.push_back(s.size());
   exact_blur_ = blur_.init(config.smoothing_sigma_px, level_sizes);
+  corner_map_fast_ = false;
+  if (config.fast_corner_map) {
+    corner_map_.init(width_px, height_px);
+    corner_map_fast_ = corner_map_.exact();
+  }
   cell_threshold_.assign(
       static_cast<std::size_t>(config.n_levels) * config.grid_cols * config.grid_rows, 0);
   fast_corners_.reserve(static_cast<std::size_t>(width_px) * height_px / 16 + 64);
@@ -128,13 +133,18 @@ void GridOrbExtractor::detectCell(const cv::Mat& image, const cv::Rect& cell, in
       std::clamp(*cell_threshold, config_.fast_threshold_min, config_.fast_threshold_max);
   bool first_pass = true;
   for (;;) {
-    cv::FAST(image(roi), fast_corners_, threshold, true, cv::FastFeatureDetector::TYPE_9_16);
-    cell_corners_.clear();
-    for (cv::KeyPoint kp : fast_corners_) {
-      kp.pt.x += static_cast<float>(roi.x);
-      kp.pt.y += static_cast<float>(roi.y);
-      if (cell.contains(cv::Point(static_cast<int>(kp.pt.x), static_cast<int>(kp.pt.y)))) {
-        cell_corners_.push_back(kp);
+    if (corner_map_fast_) {
+      corner_map_.compute(image, cell, threshold);
+      corner_map_.detect(cell, threshold, &cell_corners_);
+    } else {
+      cv::FAST(image(roi), fast_corners_, threshold, true, cv::FastFeatureDetector::TYPE_9_16);
+      cell_corners_.clear();
+      for (cv::KeyPoint kp : fast_corners_) {
+        kp.pt.x += static_cast<float>(roi.x);
+        kp.pt.y += static_cast<float>(roi.y);
+        if (cell.contains(cv::Point(static_cast<int>(kp.pt.x), static_cast<int>(kp.pt.y)))) {
+          cell_corners_.push_back(kp);
+        }
       }
     }
     if (first_pass) {

@@ -2,6 +2,7 @@
 #include <opencv2/core.hpp>
 #include <vector>
 
+#include "vision/orbvo/fast_corner_map.h"
 #include "vision/orbvo/fixed_point_gaussian.h"
 #include "vision/orbvo/orb_feature.h"
 #include "vision/orbvo/steered_brief.h"
@@ -28,11 +29,14 @@ struct OrbExtractorConfig {
   int fast_threshold_min = 5;       // grey levels, [1, fast_threshold_max]
   double fast_contrast_gain = 0.8;  // first threshold per unit of cell intensity stddev, > 0
   double smoothing_sigma_px = 2.0;  // Gaussian applied before BRIEF sampling (as ORB), > 0
+  // Corners from FastCornerMap (the same corners as cv::FAST per cell, checked at init, in fewer
+  // instructions); false calls cv::FAST per cell, the reference the tests compare with.
+  bool fast_corner_map = true;
 };
 
-// Allocation: every image and bookkeeping buffer is sized in init(); cv::FAST allocates small internal
-// buffers on each call (OpenCV), nothing else does (the smoothing is FixedPointGaussian's, which
-// allocates nothing, unless this OpenCV blurs differently: then cv::GaussianBlur, which does).
+// Allocation: every image and bookkeeping buffer is sized in init(); nothing allocates in extract()
+// unless this OpenCV differs from what FastCornerMap and FixedPointGaussian reproduce: then cv::FAST and
+// cv::GaussianBlur run, and they allocate small internal buffers on each call.
 class GridOrbExtractor {
  public:
   bool init(const OrbExtractorConfig& config, int width_px, int height_px);
@@ -43,6 +47,8 @@ class GridOrbExtractor {
   double levelScale(int level) const { return scales_[level]; }
   // True when the smoothing runs in FixedPointGaussian (same bits as cv::GaussianBlur, fewer instructions).
   bool smoothsInFixedPoint() const { return exact_blur_; }
+  // True when the corners come from FastCornerMap (same corners as cv::FAST per cell).
+  bool detectsWithCornerMap() const { return corner_map_fast_; }
 
   // Features of `grey` (CV_8UC1 of the init size), sorted by level; descriptors[i] belongs to
   // features[i]. Both vectors are cleared first and never grow past capacity(). Returns the count,
@@ -70,6 +76,8 @@ class GridOrbExtractor {
   SteeredBrief brief_;
   FixedPointGaussian blur_;  // cv::GaussianBlur's result in about 60 % of its instructions
   bool exact_blur_ = false;  // blur_ reproduces cv::GaussianBlur for every level
+  FastCornerMap corner_map_;      // FAST strength of the current cell
+  bool corner_map_fast_ = false;  // corner_map_ reproduces cv::FAST and the config asks for it
 };
 
 }  // namespace deepnav

@@ -40,8 +40,8 @@ namespace deepnav {
 // 6x6 covariance, the number of tracked features and a status.
 //
 // Pure: no threads, files or clocks. Allocation: every buffer of our own is sized in init(); in the
-// steady state the remaining allocations are OpenCV's (cv::FAST, cv::resize on
-// some builds, cv::solvePnPRansac), documented in the README of this folder.
+// steady state the remaining allocations are OpenCV's (cv::solvePnPRansac, cv::resize on some builds;
+// cv::FAST only where FastCornerMap cannot reproduce it), documented in the README of this folder.
 class OrbStereoOdometry {
  public:
   // False with *error naming the bad field or size.

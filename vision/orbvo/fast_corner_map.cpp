@@ -1,0 +1,252 @@
+#include "vision/orbvo/fast_corner_map.h"
+
+#include <algorithm>
+#include <array>
+#include <opencv2/core/hal/intrin.hpp>
+#include <opencv2/features2d.hpp>
+#include <opencv2/imgproc.hpp>
+
+namespace deepnav {
+namespace {
+
+constexpr int kCircle = 16;
+constexpr int kArc = 9;  // FAST-9: 9 contiguous pixels of the 16
+
+// The Bresenham circle of radius 3 as (dx, dy), in order around it (OpenCV's order: any rotation or
+// direction of it gives the same arcs).
+constexpr std::array<std::array<int, 2>, kCircle> kCircleOffsets = {{{0, 3}, {1, 3}, {2, 2}, {3, 1},
+                                                                     {3, 0}, {3, -1}, {2, -2}, {1, -3},
+                                                                     {0, -3}, {-1, -3}, {-2, -2}, {-3, -1},
+                                                                     {-3, 0}, {-3, 1}, {-2, 2}, {-1, 3}}};
+
+// Largest over the 16 circular arcs of 9 of the smallest step along the arc: min over 9 as
+// min(min over 8, the 9th), min over 8 from mins over 2 and 4 (3 x 16 minima instead of 8 x 16).
+template <typename V, typename Min, typename Max>
+V arcStrength(const std::array<V, kCircle>& step, V zero, Min vmin, Max vmax) {
+  std::array<V, kCircle> m2, m4;
+  for (int k = 0; k < kCircle; ++k) m2[k] = vmin(step[k], step[(k + 1) % kCircle]);
+  for (int k = 0; k < kCircle; ++k) m4[k] = vmin(m2[k], m2[(k + 2) % kCircle]);
+  V best = zero;
+  for (int k = 0; k < kCircle; ++k) {
+    const V m8 = vmin(m4[k], m4[(k + 4) % kCircle]);
+    best = vmax(best, vmin(m8, step[(k + kArc - 1) % kCircle]));
+  }
+  return best;
+}
+
+std::uint8_t strengthAt(const std::array<const std::uint8_t*, kCircle>& circle, const std::uint8_t* centre,
+                        int x) {
+  std::array<int, kCircle> brighter, darker;
+  for (int k = 0; k < kCircle; ++k) {
+    const int d = circle[k][x] - centre[x];
+    brighter[k] = std::max(d, 0);
+    darker[k] = std::max(-d, 0);
+  }
+  const auto vmin = [](int a, int b) { return std::min(a, b); };
+  const auto vmax = [](int a, int b) { return std::max(a, b); };
+  return static_cast<std::uint8_t>(
+      std::max(arcStrength(brighter, 0, vmin, vmax), arcStrength(darker, 0, vmin, vmax)));
+}
+
+#if CV_SIMD128
+using V = cv::v_uint8x16;
+
+// Over the 16 arcs of 9 circle pixels: the largest arc minimum (Best = max, Worst = min) or the smallest
+// arc maximum (Best = min, Worst = max), as min over 9 = min(min over k..k+7, min over k+1..k+8) with
+// min over 8 from mins over 2 and 4: 5 x 16 vector operations.
+template <typename Worst, typename Best>
+inline V bestArc(const std::array<V, kCircle>& c, Worst worst, Best best) {
+  std::array<V, kCircle> w2, w4;
+#pragma GCC unroll 16
+  for (int k = 0; k < kCircle; ++k) w2[k] = worst(c[k], c[(k + 1) % kCircle]);
+#pragma GCC unroll 16
+  for (int k = 0; k < kCircle; ++k) w4[k] = worst(w2[k], w2[(k + 2) % kCircle]);
+  V w8 = worst(w4[0], w4[4]);
+  V next = worst(w4[1], w4[5]);
+  V result = worst(w8, next);
+#pragma GCC unroll 16
+  for (int k = 1; k < kCircle; ++k) {
+    w8 = next;
+    next = worst(w4[(k + 1) % kCircle], w4[(k + 5) % kCircle]);
+    result = best(result, worst(w8, next));
+  }
+  return result;
+}
+
+// 16 pixels from x on. Saturating u8 subtraction of the centre is monotone, so the brighter strength
+// max_arc min_j (c_j - p)+ equals (max_arc min_j c_j - p)+, the darker one (p - min_arc max_j c_j)+:
+// the arcs run on the raw circle values, once for each direction. A pixel whose circle has no two
+// neighbouring compass points (0, 4, 8, 12) both brighter or both darker by more than `floor` cannot
+// be a corner above it (every arc of 9 holds two of them): when no lane can, the block is left at 0
+// without the arcs, as FAST's own first test does.
+void strength16(const std::array<const std::uint8_t*, kCircle>& circle, const std::uint8_t* centre,
+                int x, const V& floor, std::uint8_t* out) {
+  const V p = cv::v_load(centre + x);
+  std::array<V, kCircle> c;
+#pragma GCC unroll 16
+  for (int k = 0; k < kCircle; ++k) c[k] = cv::v_load(circle[k] + x);
+  const auto brighter = [&](int k) { return (c[k] - p) > floor; };
+  const auto darker = [&](int k) { return (p - c[k]) > floor; };
+  const V candidate = ((brighter(0) | brighter(8)) & (brighter(4) | brighter(12))) |
+                      ((darker(0) | darker(8)) & (darker(4) | darker(12)));
+  if (!cv::v_check_any(candidate)) {
+    cv::v_store(out + x, cv::v_setzero_u8());
+    return;
+  }
+  const auto vmin = [](V a, V b) { return cv::v_min(a, b); };
+  const auto vmax = [](V a, V b) { return cv::v_max(a, b); };
+  const V brightest_arc = bestArc(c, vmin, vmax);  // max over arcs of the arc's minimum
+  const V darkest_arc = bestArc(c, vmax, vmin);    // min over arcs of the arc's maximum
+  cv::v_store(out + x, cv::v_max(brightest_arc - p, p - darkest_arc));
+}
+#endif
+
+// s of row y's pixels x_begin <= x < x_end (at least kRadiusPx from the image's edges).
+void strengthRow(const cv::Mat& image, int y, int x_begin, int x_end, int floor, std::uint8_t* out) {
+  std::array<const std::uint8_t*, kCircle> circle{};
+  for (int k = 0; k < kCircle; ++k) {
+    circle[k] = image.ptr<std::uint8_t>(y + kCircleOffsets[k][1]) + kCircleOffsets[k][0];
+  }
+  const std::uint8_t* centre = image.ptr<std::uint8_t>(y);
+  int x = x_begin;
+#if CV_SIMD128
+  constexpr int kLanes = 16;
+  const V floor_v = cv::v_setall_u8(static_cast<std::uint8_t>(floor));
+  for (; x + kLanes <= x_end; x += kLanes) strength16(circle, centre, x, floor_v, out);
+  // the last partial block again from x_end - 16: recomputed pixels get the same values
+  if (x < x_end && x_end - kLanes >= x_begin) {
+    strength16(circle, centre, x_end - kLanes, floor_v, out);
+    x = x_end;
+  }
+#endif
+  (void)floor;  // the scalar tail computes every strength exactly
+  for (; x < x_end; ++x) out[x] = strengthAt(circle, centre, x);
+}
+
+// cv::FAST's non-maximum test inside the cell: s beats every 8-neighbour in the cell.
+bool isCellMaximum(const cv::Mat& strength, const cv::Rect& cell, int x, int y) {
+  const std::uint8_t s = strength.at<std::uint8_t>(y, x);
+  const int x0 = std::max(x - 1, cell.x);
+  const int x1 = std::min(x + 1, cell.x + cell.width - 1);
+  const int y0 = std::max(y - 1, cell.y);
+  const int y1 = std::min(y + 1, cell.y + cell.height - 1);
+  for (int v = y0; v <= y1; ++v) {
+    const std::uint8_t* row = strength.ptr<std::uint8_t>(v);
+    for (int u = x0; u <= x1; ++u) {
+      if ((u != x || v != y) && row[u] >= s) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+void FastCornerMap::init(int max_width_px, int max_height_px) {
+  constexpr int kCheckArea = 97 * 83;  // the size of the images reproducesOpenCv() uses
+  const std::size_t area = static_cast<std::size_t>(std::max(max_width_px, 0)) * std::max(max_height_px, 0);
+  buffer_.assign(std::max<std::size_t>(area, kCheckArea), 0);
+  exact_ = reproducesOpenCv();
+}
+
+void FastCornerMap::compute(const cv::Mat& image, const cv::Rect& area, int floor_threshold) {
+  CV_Assert(image.type() == CV_8UC1 &&
+            static_cast<std::size_t>(image.rows) * image.cols <= buffer_.size());
+  CV_Assert(area.x >= kRadiusPx && area.y >= kRadiusPx && area.x + area.width <= image.cols - kRadiusPx &&
+            area.y + area.height <= image.rows - kRadiusPx);
+  if (strength_.data != buffer_.data() || strength_.size() != image.size()) {
+    strength_ = cv::Mat(image.rows, image.cols, CV_8UC1, buffer_.data());
+  }
+  for (int y = area.y; y < area.y + area.height; ++y) {
+    strengthRow(image, y, area.x, area.x + area.width, floor_threshold, strength_.ptr<std::uint8_t>(y));
+  }
+}
+
+void FastCornerMap::detect(const cv::Rect& cell, int threshold,
+                           std::vector<cv::KeyPoint>* corners) const {
+  corners->clear();
+  const int x_end = cell.x + cell.width;
+  for (int y = cell.y; y < cell.y + cell.height; ++y) {
+    const std::uint8_t* row = strength_.ptr<std::uint8_t>(y);
+    int x = cell.x;
+#if CV_SIMD128
+    // most pixels are below the threshold: skip them 16 at a time
+    const cv::v_uint8x16 t = cv::v_setall_u8(static_cast<std::uint8_t>(threshold));
+    for (; x + 16 <= x_end; x += 16) {
+      if (!cv::v_check_any(cv::v_load(row + x) > t)) continue;
+      for (int u = x; u < x + 16; ++u) {
+        if (row[u] > threshold && isCellMaximum(strength_, cell, u, y)) {
+          corners->emplace_back(static_cast<float>(u), static_cast<float>(y), 7.0f, -1.0f,
+                                static_cast<float>(row[u] - 1));
+        }
+      }
+    }
+#endif
+    for (; x < x_end; ++x) {
+      if (row[x] > threshold && isCellMaximum(strength_, cell, x, y)) {
+        corners->emplace_back(static_cast<float>(x), static_cast<float>(y), 7.0f, -1.0f,
+                              static_cast<float>(row[x] - 1));
+      }
+    }
+  }
+}
+
+namespace {
+
+// Test images with many corners, ties of strength between neighbours and steps near the thresholds.
+std::vector<cv::Mat> checkImages(int width_px, int height_px) {
+  cv::RNG rng(0xfa57);
+  cv::Mat noise(height_px, width_px, CV_8UC1);
+  rng.fill(noise, cv::RNG::UNIFORM, 0, 256);
+  cv::Mat smooth;
+  cv::GaussianBlur(noise, smooth, cv::Size(0, 0), 1.2);
+  cv::Mat blocks(height_px / 4 + 1, width_px / 4 + 1, CV_8UC1), blocky;
+  rng.fill(blocks, cv::RNG::UNIFORM, 0, 4);
+  cv::resize(blocks * 60, blocky, noise.size(), 0.0, 0.0, cv::INTER_NEAREST);
+  cv::Mat faint(height_px, width_px, CV_8UC1);
+  rng.fill(faint, cv::RNG::UNIFORM, 100, 112);
+  return {noise, smooth, blocky, faint};
+}
+
+}  // namespace
+
+bool FastCornerMap::sameCornersAsOpenCv(const cv::Mat& image, const cv::Rect& cell, int threshold,
+                                        std::vector<cv::KeyPoint>* scratch) const {
+  const cv::Rect roi(cell.x - kRadiusPx, cell.y - kRadiusPx, cell.width + 2 * kRadiusPx,
+                     cell.height + 2 * kRadiusPx);
+  std::vector<cv::KeyPoint> expected;
+  cv::FAST(image(roi), expected, threshold, true, cv::FastFeatureDetector::TYPE_9_16);
+  detect(cell, threshold, scratch);
+  if (expected.size() != scratch->size()) return false;
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    const cv::KeyPoint& e = expected[i];
+    const cv::KeyPoint& g = (*scratch)[i];
+    if (e.pt.x + roi.x != g.pt.x || e.pt.y + roi.y != g.pt.y || e.response != g.response) return false;
+  }
+  return true;
+}
+
+// The check images cut into cells of uneven sizes (one at the 3 px margin), computed at two floors and
+// detected at every threshold from the floor up, against cv::FAST on each widened cell.
+bool FastCornerMap::reproducesOpenCv() {
+  constexpr int kW = 97, kH = 83;
+  const std::array<int, 5> thresholds = {1, 5, 9, 20, 40};
+  const std::array<int, 4> xs = {kRadiusPx, 20, 51, kW - kRadiusPx};
+  const std::array<int, 4> ys = {kRadiusPx, 31, 44, kH - kRadiusPx};
+  std::vector<cv::KeyPoint> scratch;
+  for (const cv::Mat& image : checkImages(kW, kH)) {
+    for (int floor : {1, 9}) {
+      compute(image, cv::Rect(kRadiusPx, kRadiusPx, kW - 2 * kRadiusPx, kH - 2 * kRadiusPx), floor);
+      for (int gy = 0; gy + 1 < static_cast<int>(ys.size()); ++gy) {
+        for (int gx = 0; gx + 1 < static_cast<int>(xs.size()); ++gx) {
+          const cv::Rect cell(xs[gx], ys[gy], xs[gx + 1] - xs[gx], ys[gy + 1] - ys[gy]);
+          for (int t : thresholds) {
+            if (t >= floor && !sameCornersAsOpenCv(image, cell, t, &scratch)) return false;
+          }
+        }
+      }
+    }
+  }
+  return true;
+}
+
+}  // namespace deepnav
