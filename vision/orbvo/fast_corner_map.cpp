@@ -125,15 +125,23 @@ void strengthRow(const cv::Mat& image, int y, int x_begin, int x_end, int floor,
 
 // cv::FAST's non-maximum test inside the cell: s beats every 8-neighbour in the cell.
 bool isCellMaximum(const cv::Mat& strength, const cv::Rect& cell, int x, int y) {
-  const std::uint8_t s = strength.at<std::uint8_t>(y, x);
+  const std::uint8_t* row = strength.ptr<std::uint8_t>(y) + x;
+  const std::uint8_t s = *row;
+  const std::size_t step = strength.step;
+  if (x > cell.x && x + 1 < cell.x + cell.width && y > cell.y && y + 1 < cell.y + cell.height) {
+    const std::uint8_t* up = row - step;
+    const std::uint8_t* down = row + step;
+    return s > row[-1] && s > row[1] && s > up[-1] && s > up[0] && s > up[1] && s > down[-1] &&
+           s > down[0] && s > down[1];
+  }
   const int x0 = std::max(x - 1, cell.x);
   const int x1 = std::min(x + 1, cell.x + cell.width - 1);
   const int y0 = std::max(y - 1, cell.y);
   const int y1 = std::min(y + 1, cell.y + cell.height - 1);
   for (int v = y0; v <= y1; ++v) {
-    const std::uint8_t* row = strength.ptr<std::uint8_t>(v);
+    const std::uint8_t* r = strength.ptr<std::uint8_t>(v);
     for (int u = x0; u <= x1; ++u) {
-      if ((u != x || v != y) && row[u] >= s) return false;
+      if ((u != x || v != y) && r[u] >= s) return false;
     }
   }
   return true;
@@ -165,28 +173,25 @@ void FastCornerMap::detect(const cv::Rect& cell, int threshold,
                            std::vector<cv::KeyPoint>* corners) const {
   corners->clear();
   const int x_end = cell.x + cell.width;
+  const auto consider = [&](int x, int y, const std::uint8_t* row) {
+    if (row[x] > threshold && isCellMaximum(strength_, cell, x, y)) {
+      corners->emplace_back(static_cast<float>(x), static_cast<float>(y), 7.0f, -1.0f,
+                            static_cast<float>(row[x] - 1));
+    }
+  };
   for (int y = cell.y; y < cell.y + cell.height; ++y) {
     const std::uint8_t* row = strength_.ptr<std::uint8_t>(y);
     int x = cell.x;
 #if CV_SIMD128
-    // most pixels are below the threshold: skip them 16 at a time
+    // most pixels are below the threshold: only the lanes above it are looked at, in order
     const cv::v_uint8x16 t = cv::v_setall_u8(static_cast<std::uint8_t>(threshold));
     for (; x + 16 <= x_end; x += 16) {
-      if (!cv::v_check_any(cv::v_load(row + x) > t)) continue;
-      for (int u = x; u < x + 16; ++u) {
-        if (row[u] > threshold && isCellMaximum(strength_, cell, u, y)) {
-          corners->emplace_back(static_cast<float>(u), static_cast<float>(y), 7.0f, -1.0f,
-                                static_cast<float>(row[u] - 1));
-        }
+      for (int above = cv::v_signmask(cv::v_load(row + x) > t); above != 0; above &= above - 1) {
+        consider(x + __builtin_ctz(static_cast<unsigned>(above)), y, row);
       }
     }
 #endif
-    for (; x < x_end; ++x) {
-      if (row[x] > threshold && isCellMaximum(strength_, cell, x, y)) {
-        corners->emplace_back(static_cast<float>(x), static_cast<float>(y), 7.0f, -1.0f,
-                              static_cast<float>(row[x] - 1));
-      }
-    }
+    for (; x < x_end; ++x) consider(x, y, row);
   }
 }
 
