@@ -151,4 +151,16 @@ SyntheticPlaneScene makeOrbVoTestScene(std::uint64_t seed, double contrast) {
   return scene;
 }
 
+cv::Mat renderOrbVoTestImage(std::uint64_t scene_seed, double contrast, std::uint64_t noise_seed) {
+  const SyntheticPlaneScene scene = makeOrbVoTestScene(scene_seed, contrast);
+  cv::Mat left, right;
+  scene.render(StereoRig{}, Eigen::Quaterniond::Identity(), Eigen::Vector3d::Zero(), 90, &left, &right);
+  cv::Mat noise(left.size(), CV_16SC1), sum;
+  cv::RNG(noise_seed).fill(noise, cv::RNG::NORMAL, 0.0, 1.5);
+  left.convertTo(sum, CV_16SC1);
+  sum += noise;
+  sum.convertTo(left, CV_8UC1);
+  return left;
+}
+
 }  // namespace deepnav

@@ -55,4 +55,8 @@ class SyntheticPlaneScene {
 // +-0.5 m.
 SyntheticPlaneScene makeOrbVoTestScene(std::uint64_t seed, double contrast);
 
+// The left image of makeOrbVoTestScene(scene_seed, contrast) from the origin on a grey 90 background,
+// with Gaussian sensor noise of 1.5 grey levels drawn from noise_seed: the extractor tests' input.
+cv::Mat renderOrbVoTestImage(std::uint64_t scene_seed, double contrast, std::uint64_t noise_seed);
+
 }  // namespace deepnav

@@ -17,23 +17,10 @@ namespace {
 constexpr int kWidthPx = 688;
 constexpr int kHeightPx = 516;
 
-cv::Mat renderSceneImage(double contrast) {
-  const SyntheticPlaneScene scene = makeOrbVoTestScene(11, contrast);
-  cv::Mat left, right;
-  scene.render(StereoRig{}, Eigen::Quaterniond::Identity(), Eigen::Vector3d::Zero(), 90, &left,
-               &right);
-  cv::Mat noise(left.size(), CV_16SC1), sum;
-  cv::RNG(3).fill(noise, cv::RNG::NORMAL, 0.0, 1.5);
-  left.convertTo(sum, CV_16SC1);
-  sum += noise;
-  sum.convertTo(left, CV_8UC1);
-  return left;
-}
-
 // The left image of the test scene at contrast 0.6 (usual) or 0.1 (dim), rendered once.
 const cv::Mat& sceneImage(double contrast) {
-  static const cv::Mat usual = renderSceneImage(0.6);
-  static const cv::Mat dim = renderSceneImage(0.1);
+  static const cv::Mat usual = renderOrbVoTestImage(11, 0.6, 3);
+  static const cv::Mat dim = renderOrbVoTestImage(11, 0.1, 3);
   return contrast > 0.3 ? usual : dim;
 }
 

@@ -32,17 +32,7 @@ void expectSameCorners(const std::vector<cv::KeyPoint>& expected, const std::vec
 }
 
 // A rendered 688x516 scene with sensor noise, and a dim copy: the extractor's usual input.
-cv::Mat sceneImage(double contrast) {
-  const SyntheticPlaneScene scene = makeOrbVoTestScene(5, contrast);
-  cv::Mat left, right;
-  scene.render(StereoRig{}, Eigen::Quaterniond::Identity(), Eigen::Vector3d::Zero(), 90, &left, &right);
-  cv::Mat noise(left.size(), CV_16SC1), sum;
-  cv::RNG(9).fill(noise, cv::RNG::NORMAL, 0.0, 1.5);
-  left.convertTo(sum, CV_16SC1);
-  sum += noise;
-  sum.convertTo(left, CV_8UC1);
-  return left;
-}
+cv::Mat sceneImage(double contrast) { return renderOrbVoTestImage(5, contrast, 9); }
 
 TEST(FastCornerMap, ReproducesOpenCvOnThisPlatform) {
   FastCornerMap map;
