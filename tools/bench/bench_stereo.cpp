@@ -20,6 +20,7 @@
 #include <opencv2/imgcodecs.hpp>
 #include <opencv2/imgproc.hpp>
 
+#include "tests/support/source_paths.h"
 #include "tools/bench/one_core_main.h"
 #include "tools/sim/render/stereo_renderer.h"
 #include "tools/sim/sensor_simulator.h"
@@ -114,12 +115,10 @@ struct MiddleburyPair {
 };
 
 MiddleburyPair loadMiddlebury(const std::string& name) {
-  const char* env = std::getenv("DEEPNAV_SHARED_DATA");
-  // this file is tools/bench/ of the project; the data sits beside the project
-  const std::filesystem::path root =
-      env ? std::filesystem::path(env)
-          : std::filesystem::path(__FILE__).parent_path() / ".." / ".." / ".." / "shared" / "data";
-  const std::filesystem::path dir = root / "stereo" / ("middlebury-" + name);
+  // $DEEPNAV_SHARED_DATA, else the data beside the source tree (an absolute path: __FILE__ is relative
+  // in a ccache build with CCACHE_BASEDIR, as tools/test.sh makes it, and the pair was not found)
+  const std::filesystem::path dir =
+      deepnav::testing::sharedDataDir() / "stereo" / ("middlebury-" + name);
   MiddleburyPair m;
   double scale = 0.0;
   std::ifstream(dir / "info.txt") >> scale >> m.range_px;
