@@ -33,11 +33,12 @@ ROWS = [
     ("bench_orbvo", "BM_OrbVoFrame/min_time:3.000", "VO-ORB, one stereo pair", "<= 30 ms", "0.145 s"),
     ("bench_planes", "BM_Chain", "VO-planes chain (ELAS 64 disp, cloud, filter, planes, registration)",
      "<= 150 ms", "3.151 s"),
-    # ELAS rows, 6th field: libelas (its published source, one core) on the same input, measured on this
-    # machine by an earlier session (issue 20): (peer name, seconds); the row shows the ratio ours / peer.
-    ("bench_stereo", "BM_ElasDiveRobotics", "ELAS robotics, rendered dive pair, 64 disparities", "<= 21.5 ms",
+    # ELAS rows, 6th field: libelas (its published source, one core) on the same input, measured by the
+    # twelfth session (issue 20) on the VM of that day: (peer name, seconds); the row shows the ratio ours /
+    # peer, with the peer's time scaled to this machine by SPEED_REFERENCE.
+    ("bench_stereo", "BM_ElasDiveRobotics", "ELAS robotics, rendered dive pair, 64 disparities", "<= 0.5x libelas",
      "", ("libelas ROBOTICS", 43e-3)),
-    ("bench_stereo", "BM_ElasDiveDense", "ELAS dense, rendered dive pair, 64 disparities", "<= 21.5 ms", "",
+    ("bench_stereo", "BM_ElasDiveDense", "ELAS dense, rendered dive pair, 64 disparities", "<= 0.5x libelas", "",
      ("libelas ROBOTICS", 43e-3)),
     ("bench_stereo", "BM_ElasTsukubaDense", "ELAS dense, Middlebury tsukuba", "", "", ("libelas", 22.1e-3)),
     ("bench_stereo", "BM_Sgbm/wls:0", "SGBM (3-way)", "", ""),
@@ -61,6 +62,35 @@ ROWS = [
     ("bench_ekf", "BM_UpdateRelativePose/1", "EKF VO relative pose update", "<= 20 us", ""),
     ("bench_ekf", "BM_DelayedUpdateReplay50Imu/0", "EKF late update re-running 50 IMU steps", "", ""),
 ]
+
+
+# Rows whose code has not changed since the twelfth session (OpenCV's SGBM, MDM, the renderer, the EKF
+# propagation), with that session's figures (docs/benchmarks.md at 1194ae6, the VM on which libelas was
+# measured): the median of their time there over their time here scales the peer figures measured there.
+SPEED_REFERENCE = {
+    ("bench_stereo", "BM_Sgbm/wls:0"): 68.3e-3,
+    ("bench_iqa", "BM_MdmGrey688x516"): 70.14e-6,
+    ("bench_render", "BM_RenderSeabedGrey"): 64.1e-3,
+    ("bench_ekf", "BM_ImuPropagation/0"): 4.21e-6,
+}
+
+
+def speed_factor(results):
+    """How many times faster than the twelfth session's VM this machine runs the reference rows (None
+    when none ran)."""
+    ratios = [ref / results[key] for key, ref in SPEED_REFERENCE.items() if results.get(key)]
+    return statistics.median(ratios) if ratios else None
+
+
+def peer_text(peer, t, factor):
+    name, seconds = peer
+    if not t:
+        return f"{name} {human(seconds)}"
+    if not factor:
+        return f"{name} {human(seconds)} (other machine): ours {t / seconds:.2f}x its time"
+    scaled = seconds / factor
+    return (f"{name} {human(seconds)} on the twelfth session's VM, {human(scaled)} scaled to this one: "
+            f"ours {t / scaled:.2f}x its time")
 
 
 def run_benchmarks(bin_dir):
@@ -212,11 +242,17 @@ def write_table(args, work):
     results = run_benchmarks(bin_dir)
     lines = [f"Machine: {platform.machine()}, {os.cpu_count()} cores, {platform.platform()}", "",
              "| stage | CPU time | target | paper or peer |", "|---|---|---|---|"]
+    factor = speed_factor(results)
     for binary, name, label, target, paper, *peer in ROWS:
         t = results.get((binary, name))
-        if peer:
+        if peer and peer[0][0].startswith("libelas"):
+            paper = peer_text(peer[0], t, factor)
+        elif peer:
             paper = f"{peer[0][0]} {human(peer[0][1])}" + (f": ours {t / peer[0][1]:.2f}x its time" if t else "")
         lines.append(f"| {label} | {human(t) if t is not None else 'not run'} | {target} | {paper} |")
+    if factor:
+        lines += ["", f"This machine runs the unchanged reference rows (SGBM, MDM, seabed render, EKF propagation) "
+                      f"{factor:.2f}x as fast as the twelfth session's VM (median of their ratios)."]
     if args.set:
         lines += ["", "Replays with " + ", ".join(f"`{kv}`" for kv in args.set) + "."]
     dive_s, wall_s, peak_mib, default_out = replay_figures(bin_dir, args.recording, os.path.join(work, "default"),
