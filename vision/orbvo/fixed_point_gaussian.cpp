@@ -61,30 +61,57 @@ void reflectEnds(std::uint16_t* sums, int width_px) {
   }
 }
 
-// out = (sum_k w_k V(x+k) + 2^15) >> 16, with V = 256 hi + lo so both partial sums fit 16 bits.
+// out = (sum_k w_k V(x+k) + 2^15) >> 16 for 8 pixels from p. Two formulations of the same integers:
+// NEON multiplies 16-bit lanes into 32-bit accumulators in one instruction (umlal), so there each tap is
+// one widening multiply-add per half; SSE2 has no such instruction (a widening multiply costs four), so
+// there V = 256 hi + lo keeps both partial sums A = sum w hi and B = sum w lo in 16-bit lanes, and the
+// symmetric taps share one multiply: out = (A + (B >> 8) + 128) >> 8.
+#if CV_SIMD128
+#if CV_NEON
+template <int R>
+[[gnu::always_inline]] inline cv::v_uint16x8 blur8(const std::array<cv::v_uint16x8, R + 1>& wv,
+                                                    const std::uint16_t* p) {
+  cv::v_uint32x4 lo, hi;
+  cv::v_mul_expand(cv::v_load(p), wv[0], lo, hi);
+#pragma GCC unroll 16
+  for (int k = 1; k <= R; ++k) {
+    cv::v_uint32x4 l0, l1, r0, r1;
+    cv::v_mul_expand(cv::v_load(p - k), wv[k], l0, l1);
+    cv::v_mul_expand(cv::v_load(p + k), wv[k], r0, r1);
+    lo += l0 + r0;
+    hi += l1 + r1;
+  }
+  const cv::v_uint32x4 half = cv::v_setall_u32(1u << 15);
+  return cv::v_pack(cv::v_shr<16>(lo + half), cv::v_shr<16>(hi + half));
+}
+#else
+template <int R>
+[[gnu::always_inline]] inline cv::v_uint16x8 blur8(const std::array<cv::v_uint16x8, R + 1>& wv,
+                                                    const std::uint16_t* p) {
+  const cv::v_uint16x8 low_byte = cv::v_setall_u16(0xff);
+  const cv::v_uint16x8 centre = cv::v_load(p);
+  cv::v_uint16x8 a = cv::v_mul_wrap(cv::v_shr<8>(centre), wv[0]);
+  cv::v_uint16x8 b = cv::v_mul_wrap(centre & low_byte, wv[0]);
+#pragma GCC unroll 16
+  for (int k = 1; k <= R; ++k) {
+    const cv::v_uint16x8 left = cv::v_load(p - k);
+    const cv::v_uint16x8 right = cv::v_load(p + k);
+    a += cv::v_mul_wrap(cv::v_shr<8>(left) + cv::v_shr<8>(right), wv[k]);
+    b += cv::v_mul_wrap((left & low_byte) + (right & low_byte), wv[k]);
+  }
+  return cv::v_shr<8>(a + cv::v_shr<8>(b) + cv::v_setall_u16(128));
+}
+#endif
+#endif
+
 template <int R>
 void rowPass(const Weights& w, const std::uint16_t* sums, int width_px, std::uint8_t* out) {
   int x = 0;
 #if CV_SIMD128
   std::array<cv::v_uint16x8, R + 1> wv;
   for (int k = 0; k <= R; ++k) wv[k] = cv::v_setall_u16(w[k]);
-  const cv::v_uint16x8 low_byte = cv::v_setall_u16(0xff);
-  const cv::v_uint16x8 half = cv::v_setall_u16(128);
-  const auto blur8 = [&](const std::uint16_t* p) {
-    const cv::v_uint16x8 centre = cv::v_load(p);
-    cv::v_uint16x8 a = cv::v_mul_wrap(cv::v_shr<8>(centre), wv[0]);
-    cv::v_uint16x8 b = cv::v_mul_wrap(centre & low_byte, wv[0]);
-#pragma GCC unroll 16
-    for (int k = 1; k <= R; ++k) {
-      const cv::v_uint16x8 left = cv::v_load(p - k);
-      const cv::v_uint16x8 right = cv::v_load(p + k);
-      a += cv::v_mul_wrap(cv::v_shr<8>(left) + cv::v_shr<8>(right), wv[k]);
-      b += cv::v_mul_wrap((left & low_byte) + (right & low_byte), wv[k]);
-    }
-    return cv::v_shr<8>(a + cv::v_shr<8>(b) + half);
-  };
   for (; x <= width_px - 16; x += 16) {
-    cv::v_store(out + x, cv::v_pack(blur8(sums + x), blur8(sums + x + 8)));
+    cv::v_store(out + x, cv::v_pack(blur8<R>(wv, sums + x), blur8<R>(wv, sums + x + 8)));
   }
 #endif
   for (; x < width_px; ++x) {

@@ -13,9 +13,10 @@ namespace deepnav {
 // Why it can be exact: OpenCV 4 smooths 8-bit images in fixed point. Each direction has integer
 // weights w_k (k = -r..r, sum 256), the rows are summed without rounding and the result is rounded once:
 //   out = (sum_i sum_j w_i w_j I(y+i, x+j) + 2^15) >> 16.
-// Here the column sums V = sum_i w_i I (at most 255 * 256, exact in 16 bits) come first; the row pass
-// splits V = 256 hi + lo so that both partial sums A = sum w_j hi and B = sum w_j lo stay in 16-bit
-// lanes (8 per 128-bit vector, NEON and SSE alike), and
+// Here the column sums V = sum_i w_i I (at most 255 * 256, exact in 16 bits) come first. The row pass
+// on NEON multiplies V into 32-bit accumulators (umlal: one instruction per tap and half); on SSE2, which
+// has no widening multiply-add, it splits V = 256 hi + lo so that both partial sums A = sum w_j hi and
+// B = sum w_j lo stay in 16-bit lanes, and
 //   out = (256 A + B + 2^15) >> 16 = (A + (B >> 8) + 128) >> 8        (2^15 = 128 * 256).
 //
 // The weights are read from cv::GaussianBlur itself in init() (a vertical line of 255 comes out as
