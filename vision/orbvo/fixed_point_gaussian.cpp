@@ -19,6 +19,20 @@ int reflect101(int i, int n) {
 
 using Weights = std::array<std::uint16_t, FixedPointGaussian::kMaxRadiusPx + 1>;
 
+#if CV_SIMD128
+// The sum of two 16-bit lanes that cannot overflow. NEON fuses a wrapping add with the widening before it
+// and the multiply after it (uaddl, mla: the aarch64 column loop 49 instead of 85 instructions per 16
+// pixels), where the saturating add of the universal intrinsics stays a separate instruction; on SSE2 the
+// saturating add compiles to the shorter loop (callgrind: 5.7 M against 7.2 M per extraction).
+inline cv::v_uint16x8 addNoOverflow(const cv::v_uint16x8& a, const cv::v_uint16x8& b) {
+#if CV_NEON
+  return cv::v_add_wrap(a, b);
+#else
+  return a + b;
+#endif
+}
+#endif
+
 // V(x) = w_0 I(y, x) + sum_k w_k (I(y-k, x) + I(y+k, x)), exact in 16 bits (at most 255 * 256). The
 // radius is a template argument so that the tap loops unroll.
 template <int R>
@@ -39,8 +53,8 @@ void columnSums(const Weights& w, const cv::Mat& src, int y, std::uint16_t* sums
       cv::v_uint16x8 a_lo, a_hi, b_lo, b_hi;
       cv::v_expand(cv::v_load(row[R - k] + x), a_lo, a_hi);
       cv::v_expand(cv::v_load(row[R + k] + x), b_lo, b_hi);
-      sum_lo += cv::v_mul_wrap(a_lo + b_lo, wv[k]);
-      sum_hi += cv::v_mul_wrap(a_hi + b_hi, wv[k]);
+      sum_lo = addNoOverflow(sum_lo, cv::v_mul_wrap(addNoOverflow(a_lo, b_lo), wv[k]));
+      sum_hi = addNoOverflow(sum_hi, cv::v_mul_wrap(addNoOverflow(a_hi, b_hi), wv[k]));
     }
     cv::v_store(sums + x, sum_lo);
     cv::v_store(sums + x + 8, sum_hi);
