@@ -126,6 +126,35 @@ TEST(FastCornerMap, OddCellsAndTiesOnNoise) {
   }
 }
 
+// Areas narrower than 16 px take the scalar formulation; it must give the vector one's strengths (every
+// value above the floor, both polarities) and the same corners as cv::FAST on narrow cells.
+TEST(FastCornerMap, ScalarStrengthsEqualTheVectorOnes) {
+  cv::Mat image(60, 70, CV_8UC1);
+  cv::RNG(23).fill(image, cv::RNG::UNIFORM, 0, 256);
+  FastCornerMap map;
+  map.init(image.cols, image.rows);
+  const int floor = 1;
+  map.compute(image, cv::Rect(3, 3, image.cols - 6, image.rows - 6), floor);
+  const cv::Mat vector_strength = map.strength().clone();
+  std::vector<cv::KeyPoint> got;
+  int above_floor = 0;
+  for (int x = 3; x < image.cols - 3; x += 8) {
+    const cv::Rect strip(x, 3, std::min(8, image.cols - 3 - x), image.rows - 6);  // scalar: < 16 px
+    map.compute(image, strip, floor);
+    for (int y = strip.y; y < strip.y + strip.height; ++y) {
+      for (int u = strip.x; u < strip.x + strip.width; ++u) {
+        const int v = vector_strength.at<std::uint8_t>(y, u);
+        if (v <= floor && map.strength().at<std::uint8_t>(y, u) <= floor) continue;
+        ++above_floor;
+        ASSERT_EQ(map.strength().at<std::uint8_t>(y, u), v) << "pixel " << u << "," << y;
+      }
+    }
+    map.detect(strip, 30, &got);
+    expectSameCorners(openCvCorners(image, strip, 30), got, "strip x " + std::to_string(x));
+  }
+  EXPECT_GT(above_floor, 1000);
+}
+
 TEST(FastCornerMap, DetectDoesNotAllocateWithinCapacity) {
   const cv::Mat image = sceneImage(0.6);
   FastCornerMap map;

@@ -10,7 +10,6 @@ namespace deepnav {
 namespace {
 
 constexpr int kCircle = 16;
-constexpr int kArc = 9;  // FAST-9: 9 contiguous pixels of the 16
 
 // The Bresenham circle of radius 3 as (dx, dy), in order around it (OpenCV's order: any rotation or
 // direction of it gives the same arcs).
@@ -19,42 +18,10 @@ constexpr std::array<std::array<int, 2>, kCircle> kCircleOffsets = {{{0, 3}, {1,
                                                                      {0, -3}, {-1, -3}, {-2, -2}, {-3, -1},
                                                                      {-3, 0}, {-3, 1}, {-2, 2}, {-1, 3}}};
 
-// Largest over the 16 circular arcs of 9 of the smallest step along the arc: min over 9 as
-// min(min over 8, the 9th), min over 8 from mins over 2 and 4 (3 x 16 minima instead of 8 x 16).
-template <typename V, typename Min, typename Max>
-V arcStrength(const std::array<V, kCircle>& step, V zero, Min vmin, Max vmax) {
-  std::array<V, kCircle> m2, m4;
-  for (int k = 0; k < kCircle; ++k) m2[k] = vmin(step[k], step[(k + 1) % kCircle]);
-  for (int k = 0; k < kCircle; ++k) m4[k] = vmin(m2[k], m2[(k + 2) % kCircle]);
-  V best = zero;
-  for (int k = 0; k < kCircle; ++k) {
-    const V m8 = vmin(m4[k], m4[(k + 4) % kCircle]);
-    best = vmax(best, vmin(m8, step[(k + kArc - 1) % kCircle]));
-  }
-  return best;
-}
-
-std::uint8_t strengthAt(const std::array<const std::uint8_t*, kCircle>& circle, const std::uint8_t* centre,
-                        int x) {
-  std::array<int, kCircle> brighter, darker;
-  for (int k = 0; k < kCircle; ++k) {
-    const int d = circle[k][x] - centre[x];
-    brighter[k] = std::max(d, 0);
-    darker[k] = std::max(-d, 0);
-  }
-  const auto vmin = [](int a, int b) { return std::min(a, b); };
-  const auto vmax = [](int a, int b) { return std::max(a, b); };
-  return static_cast<std::uint8_t>(
-      std::max(arcStrength(brighter, 0, vmin, vmax), arcStrength(darker, 0, vmin, vmax)));
-}
-
-#if CV_SIMD128
-using V = cv::v_uint8x16;
-
-// Over the 16 arcs of 9 circle pixels: the largest arc minimum (Best = max, Worst = min) or the smallest
-// arc maximum (Best = min, Worst = max), as min over 9 = min(min over k..k+7, min over k+1..k+8) with
-// min over 8 from mins over 2 and 4: 5 x 16 vector operations.
-template <typename Worst, typename Best>
+// Over the 16 arcs of 9 circle values: the largest arc minimum (Worst = min, Best = max) or the smallest
+// arc maximum (Worst = max, Best = min), as min over 9 = min(min over k..k+7, min over k+1..k+8) with
+// min over 8 from mins over 2 and 4: 5 x 16 operations. V: int (scalar) or 16 u8 lanes.
+template <typename V, typename Worst, typename Best>
 inline V bestArc(const std::array<V, kCircle>& c, Worst worst, Best best) {
   std::array<V, kCircle> w2, w4;
 #pragma GCC unroll 16
@@ -72,6 +39,22 @@ inline V bestArc(const std::array<V, kCircle>& c, Worst worst, Best best) {
   }
   return result;
 }
+
+// The strength of one pixel (the vector code's formulation, below, in plain ints).
+std::uint8_t strengthAt(const std::array<const std::uint8_t*, kCircle>& circle, const std::uint8_t* centre,
+                        int x) {
+  std::array<int, kCircle> c;
+  for (int k = 0; k < kCircle; ++k) c[k] = circle[k][x];
+  const auto vmin = [](int a, int b) { return std::min(a, b); };
+  const auto vmax = [](int a, int b) { return std::max(a, b); };
+  const int p = centre[x];
+  const int brighter = bestArc(c, vmin, vmax) - p;
+  const int darker = p - bestArc(c, vmax, vmin);
+  return static_cast<std::uint8_t>(std::max({brighter, darker, 0}));
+}
+
+#if CV_SIMD128
+using V = cv::v_uint8x16;
 
 // 16 pixels from x on. Saturating u8 subtraction of the centre is monotone, so the brighter strength
 // max_arc min_j (c_j - p)+ equals (max_arc min_j c_j - p)+, the darker one (p - min_arc max_j c_j)+:

@@ -8,8 +8,6 @@
 namespace deepnav {
 namespace {
 
-constexpr int kFastRadiusPx = 3;  // FAST-9 samples a circle of radius 3
-
 bool validConfig(const OrbExtractorConfig& c) {
   return c.grid_cols >= 1 && c.grid_cols <= 64 && c.grid_rows >= 1 && c.grid_rows <= 64 &&
          c.max_features_per_cell >= 1 && c.n_levels >= 1 && c.n_levels <= 8 &&
@@ -121,8 +119,8 @@ void GridOrbExtractor::detectCell(const cv::Mat& image, const cv::Rect& cell, in
                                   int* cell_threshold) {
   cell_corners_.clear();
   // FAST cannot fire within 3 px of its image's edge: widen the ROI so the whole cell is searched.
-  const cv::Rect roi(cell.x - kFastRadiusPx, cell.y - kFastRadiusPx, cell.width + 2 * kFastRadiusPx,
-                     cell.height + 2 * kFastRadiusPx);
+  constexpr int r = FastCornerMap::kRadiusPx;
+  const cv::Rect roi(cell.x - r, cell.y - r, cell.width + 2 * r, cell.height + 2 * r);
   if (*cell_threshold == 0) {
     cv::Scalar mean, stddev;
     cv::meanStdDev(image(cell), mean, stddev);

@@ -34,9 +34,9 @@ struct OrbExtractorConfig {
   bool fast_corner_map = true;
 };
 
-// Allocation: every image and bookkeeping buffer is sized in init(); nothing allocates in extract()
-// unless this OpenCV differs from what FastCornerMap and FixedPointGaussian reproduce: then cv::FAST and
-// cv::GaussianBlur run, and they allocate small internal buffers on each call.
+// Allocation: every image and bookkeeping buffer is sized in init(); in extract() only OpenCV allocates:
+// cv::resize (the pyramid, on some builds), cv::meanStdDev (a cell's first image), and cv::FAST and
+// cv::GaussianBlur where this OpenCV differs from what FastCornerMap and FixedPointGaussian reproduce.
 class GridOrbExtractor {
  public:
   bool init(const OrbExtractorConfig& config, int width_px, int height_px);
