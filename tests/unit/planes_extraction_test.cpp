@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <opencv2/imgproc.hpp>
 
 #include "tests/support/synthetic_scene.h"
@@ -45,7 +46,10 @@ struct Fixture {
   PlaneSet planes;
 };
 
-TEST(PlaneExtraction, FindsFloorAndBoxFacesWithNormalsOffsetsAndHole) {
+// Both growers: the pixel grower (the default) and the tile grower, which must pass the same test.
+class PlaneExtractionByGrower : public ::testing::TestWithParam<PlaneGrowingMethod> {};
+
+TEST_P(PlaneExtractionByGrower, FindsFloorAndBoxFacesWithNormalsOffsetsAndHole) {
   // GIVEN a noisy (0.2 px) disparity map of a box on the floor, with a 40 x 20 px patch of the
   // floor without disparity (a dark, textureless spot)
   Fixture f;
@@ -62,6 +66,7 @@ TEST(PlaneExtraction, FindsFloorAndBoxFacesWithNormalsOffsetsAndHole) {
   PlaneExtractionConfig config;
   config.min_area_px = 1500;
   config.disparity_noise_px = 0.2;
+  config.growing = GetParam();
   ASSERT_TRUE(f.extractor.init(config, geometry(), builder.gridRows(), builder.gridCols(), 1));
   ASSERT_TRUE(f.extractor.allocatePlaneSet(&f.planes));
 
@@ -149,6 +154,12 @@ TEST(PlaneExtraction, FindsFloorAndBoxFacesWithNormalsOffsetsAndHole) {
     }
   }
 }
+
+INSTANTIATE_TEST_SUITE_P(Growers, PlaneExtractionByGrower,
+                         ::testing::Values(PlaneGrowingMethod::kPixels, PlaneGrowingMethod::kTiles),
+                         [](const ::testing::TestParamInfo<PlaneGrowingMethod>& info) {
+                           return std::string(info.param == PlaneGrowingMethod::kTiles ? "Tiles" : "Pixels");
+                         });
 
 TEST(PlaneExtraction, NothingOnAnEmptyCloudAndSizeMismatchIsRefused) {
   PlaneExtractor extractor;

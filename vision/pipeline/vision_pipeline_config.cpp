@@ -75,8 +75,8 @@ const std::array kVisionParams = {
       DEEPNAV_PARAM_FIELD(VisionPipelineConfig, planes.extraction.independent_points)},
     D{"planes_growing", ParamType::kEnum, "-", 0, 0, kPlaneGrowingMethods,
       "plane extraction: pixels (region growing point by point, the reference) or tiles (planar tiles grown over "
-      "the tile graph, then pixel refinement at the borders, after CAPE: about 3x fewer instructions, not the same "
-      "cells; vision/planes/README.md)",
+      "the tile graph, then the regions grown cell by cell from their whole tiles, after CAPE: about 2x fewer "
+      "instructions, not the same cells; vision/planes/README.md)",
       DEEPNAV_PARAM_ENUM_FIELD(VisionPipelineConfig, planes.extraction.growing)},
     D{"planes_tile_size_px", ParamType::kInt, "px", 4, 64, "",
       "plane extraction with planes_growing=tiles: side of a tile in image pixels",

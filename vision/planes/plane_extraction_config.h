@@ -4,7 +4,8 @@ namespace deepnav {
 
 // How regions are grown (PlaneExtractor): kPixels, the Poppinga grower below, point by point
 // (PlaneRegionGrower, the default); kTiles, the cell-based grower of Proenca & Gao (CAPE, IROS
-// 2018): planar tiles grown over the tile graph, then pixel refinement (PlaneTileGrower).
+// 2018): planar tiles grown over the tile graph, then the regions grown cell by cell from their whole
+// tiles (PlaneTileGrower; it passes the pixel grower's tests, vision/planes/README.md).
 enum class PlaneGrowingMethod { kPixels = 0, kTiles = 1 };
 
 // Region growing after Poppinga, Vaskevicius, Birk & Pathak, "Fast plane detection and

@@ -52,6 +52,13 @@ bool PlaneTileGrower::init(const PlaneExtractionConfig& config, double fx_px,
   tiles_.assign(static_cast<std::size_t>(tile_rows_) * tile_cols_, Tile{});
   seeds_.assign(tiles_.size(), Seed{});
   queue_.assign(tiles_.size(), 0);
+  tile_candidates_.assign(tiles_.size(), TileCandidates{});
+  has_whole_tile_.assign(config.max_planes, false);
+  tile_row_of_.resize(rows);
+  for (int r = 0; r < rows; ++r) tile_row_of_[r] = r / tile_cells_;
+  tile_col_of_.resize(cols);
+  for (int c = 0; c < cols; ++c) tile_col_of_[c] = c / tile_cells_;
+  cell_queue_.assign(static_cast<std::size_t>(rows) * cols, 0);
   regions_.assign(config.max_planes, PlaneRegion{});
   pixel_planes_.assign(config.max_planes, PixelPlane{});
   region_of_label_.assign(256, -1);
@@ -261,14 +268,15 @@ int PlaneTileGrower::tileLabels(int i, std::array<std::uint8_t, 9>* labels) cons
   return count;
 }
 
-// Step 3: each valid cell of the tile gets the label of the nearest candidate plane whose point
-// test it passes (0 if none); returns the cells labelled. Four cells per SIMD step.
-int PlaneTileGrower::labelTile(const Tile& tile, std::uint8_t* labels, const int* candidates,
-                               int count) {
+// Step 3a: each valid cell of a region's tile gets the region's label when its plane is the nearest
+// of those whose point test the cell passes (the candidates of the tile: its own region and its 8
+// neighbours'), else 0; returns the cells labelled. Four cells per SIMD step.
+int PlaneTileGrower::labelOwnTile(const Tile& tile, const TileCandidates& t, std::uint8_t* labels) {
   const float gamma = static_cast<float>(config_.max_point_distance_m);
   const cv::v_float32x4 v_gamma = cv::v_setall_f32(gamma);
   const cv::v_float32x4 v_zero = cv::v_setzero_f32();
   const cv::v_float32x4 v_inf = cv::v_setall_f32(std::numeric_limits<float>::infinity());
+  const cv::v_float32x4 v_own = cv::v_setall_f32(pixel_planes_[tile.region].label);
   int labelled = 0;
   for (int r = 0; r < tile.view.rows; ++r) {
     const cv::Vec3f* p = tile.view.points + r * tile.view.stride;
@@ -279,8 +287,8 @@ int PlaneTileGrower::labelTile(const Tile& tile, std::uint8_t* labels, const int
       cv::v_load_deinterleave(&p[c][0], x, y, z);
       const cv::v_float32x4 valid = z > v_zero;
       cv::v_float32x4 best = v_inf, best_label = v_zero;
-      for (int j = 0; j < count; ++j) {
-        const PixelPlane& q = pixel_planes_[candidates[j]];
+      for (int j = 0; j < t.count; ++j) {
+        const PixelPlane& q = pixel_planes_[t.region[j]];
         const cv::v_float32x4 dist = cv::v_abs(cv::v_setall_f32(q.nx) * x +
                                                cv::v_setall_f32(q.ny) * y +
                                                cv::v_setall_f32(q.nz) * z - cv::v_setall_f32(q.d));
@@ -289,29 +297,131 @@ int PlaneTileGrower::labelTile(const Tile& tile, std::uint8_t* labels, const int
         best = cv::v_select(pass, dist, best);
         best_label = cv::v_select(pass, cv::v_setall_f32(q.label), best_label);
       }
+      // own plane: kept unless another passing plane is nearer by more than half the own distance
+      const PixelPlane& o = pixel_planes_[tile.region];
+      const cv::v_float32x4 own_dist = cv::v_abs(cv::v_setall_f32(o.nx) * x + cv::v_setall_f32(o.ny) * y +
+                                                 cv::v_setall_f32(o.nz) * z - cv::v_setall_f32(o.d));
+      const cv::v_float32x4 own_pass = valid & (own_dist <= v_gamma + cv::v_setall_f32(o.k_per_z) * z);
+      const cv::v_float32x4 keep = own_pass & (best_label == v_own);
       alignas(16) float out[4];
-      cv::v_store_aligned(out, best_label);
+      cv::v_store_aligned(out, cv::v_select(keep, v_own, v_zero));
       for (int k = 0; k < 4; ++k) {
         l[c + k] = static_cast<std::uint8_t>(out[k]);
         labelled += out[k] != 0.0f;
       }
     }
     for (; c < tile.view.cols; ++c) {
-      l[c] = 0;
-      if (!OrganizedCloud::isValid(p[c])) continue;
-      float best = std::numeric_limits<float>::infinity();
-      for (int j = 0; j < count; ++j) {
-        const PixelPlane& q = pixel_planes_[candidates[j]];
-        const float dist = std::abs(q.nx * p[c][0] + q.ny * p[c][1] + q.nz * p[c][2] - q.d);
-        if (dist <= gamma + q.k_per_z * p[c][2] && dist < best) {
-          best = dist;
-          l[c] = q.label;
-        }
-      }
+      l[c] = OrganizedCloud::isValid(p[c]) && nearestPassing(t, p[c]) == tile.region
+                 ? pixel_planes_[tile.region].label
+                 : 0;
       labelled += l[c] != 0;
     }
   }
   return labelled;
+}
+
+bool PlaneTileGrower::passes(const PixelPlane& q, const cv::Vec3f& p) const {
+  const float dist = std::abs(q.nx * p[0] + q.ny * p[1] + q.nz * p[2] - q.d);
+  return dist <= static_cast<float>(config_.max_point_distance_m) + q.k_per_z * p[2];
+}
+
+// Step 3b: the regions grow from the labelled cells of their tiles into the unlabelled valid cells
+// around them, breadth-first and all at once, a cell joining the first region that reaches it and
+// whose point test it passes, within the tiles where that region may hold cells (its own and their
+// 8 neighbours). Boundaries so follow the cells as in the pixel grower: each region stays connected
+// and no region leaves specks inside another (taking, per cell, the nearest plane did both where two
+// planes meet: near the intersection line the noise decides which plane is nearer).
+void PlaneTileGrower::growBorders(const OrganizedCloud& cloud) {
+  std::uint8_t* labels = labels_.ptr<std::uint8_t>(0);
+  const cv::Vec3f* points = cloud.row(0);
+  std::int32_t* queue = cell_queue_.data();
+  int end = 0;
+  // Seeds: labelled cells with an unlabelled 4-neighbour (the others cannot pass anything on); in a
+  // whole tile only its edge cells can have one.
+  const auto seed = [&](int r, int c) {
+    const int cell = r * cols_ + c;
+    if (labels[cell] == 0) return;
+    if ((c > 0 && labels[cell - 1] == 0) || (c + 1 < cols_ && labels[cell + 1] == 0) ||
+        (r > 0 && labels[cell - cols_] == 0) || (r + 1 < rows_ && labels[cell + cols_] == 0)) {
+      queue[end++] = cell;
+    }
+  };
+  for (const Tile& tile : tiles_) {
+    if (tile.region < 0 || (tile.whole_label == 0 && has_whole_tile_[tile.region])) continue;
+    const int offset = static_cast<int>(tile.view.points - points);
+    const int r0 = offset / cols_, c0 = offset % cols_;
+    const int last_r = tile.view.rows - 1, last_c = tile.view.cols - 1;
+    for (int r = 0; r <= last_r; ++r) {
+      const bool edge_row = r == 0 || r == last_r || tile.whole_label == 0;
+      for (int c = 0; c <= last_c; c += edge_row ? 1 : std::max(1, last_c)) seed(r0 + r, c0 + c);
+    }
+  }
+  // First every cell joins the region nearest to it (of those it passes) when that region reaches
+  // it; then the cells still free join any region that reaches them and whose test they pass (their
+  // nearest plane's region never got to them): both passes through the same queue.
+  for (int pass = 0; pass < 2; ++pass) {
+    const bool nearest_only = pass == 0;
+    for (int head = 0; head < end; ++head) {
+      const int cell = queue[head];
+      const std::uint8_t label = labels[cell];
+      const int region = label - 1;
+      ScatterSums* sums = &regions_[region].sums;
+      const int r = cell / cols_, c = cell - r * cols_;
+      const auto visit = [&](int n, int rn, int cn) {
+        if (labels[n] != 0 || !OrganizedCloud::isValid(points[n])) return;
+        const TileCandidates& t = tile_candidates_[tile_row_of_[rn] * tile_cols_ + tile_col_of_[cn]];
+        if (nearest_only ? nearestPassing(t, points[n]) != region : !mayHold(t, region, points[n])) return;
+        labels[n] = label;
+        queue[end++] = n;
+        const Eigen::Vector3d& o = sums->origin;
+        sums->add(points[n][0] - o.x(), points[n][1] - o.y(), points[n][2] - o.z());
+      };
+      if (c > 0) visit(cell - 1, r, c - 1);
+      if (c + 1 < cols_) visit(cell + 1, r, c + 1);
+      if (r > 0) visit(cell - cols_, r - 1, c);
+      if (r + 1 < rows_) visit(cell + cols_, r + 1, c);
+    }
+  }
+}
+
+// True when the region is one a tile may hold and p passes its point test.
+bool PlaneTileGrower::mayHold(const TileCandidates& t, int region, const cv::Vec3f& p) const {
+  for (int i = 0; i < t.count; ++i) {
+    if (t.region[i] == region) return passes(pixel_planes_[region], p);
+  }
+  return false;
+}
+
+// Of the regions a tile may hold, the one whose plane is nearest to p among those whose point test p
+// passes; -1 when none.
+int PlaneTileGrower::nearestPassing(const TileCandidates& t, const cv::Vec3f& p) const {
+  int best = -1;
+  float best_dist = std::numeric_limits<float>::infinity();
+  for (int i = 0; i < t.count; ++i) {
+    const PixelPlane& q = pixel_planes_[t.region[i]];
+    const float dist = std::abs(q.nx * p[0] + q.ny * p[1] + q.nz * p[2] - q.d);
+    if (dist <= static_cast<float>(config_.max_point_distance_m) + q.k_per_z * p[2] && dist < best_dist) {
+      best_dist = dist;
+      best = t.region[i];
+    }
+  }
+  return best;
+}
+
+// The plane of each region from the cells its tiles kept (noise-corrected fit), for the border growth:
+// the tiles' plane also held the cells that failed its point test.
+void PlaneTileGrower::refitPixelPlanes(int regions) {
+  const float k_sigma = static_cast<float>(config_.distance_sigmas);
+  for (int i = 0; i < regions; ++i) {
+    const ScatterSums& sums = regions_[i].sums;
+    if (sums.n < 3.0) continue;
+    const Eigen::Vector3d n = fitPlane(sums, noiseScatter(sums, sumDepthSquared(sums))).normal;
+    const double d = n.dot(sums.mean());
+    PixelPlane& q = pixel_planes_[i];
+    q = PixelPlane{static_cast<float>(n.x()), static_cast<float>(n.y()), static_cast<float>(n.z()),
+                   static_cast<float>(d), k_sigma * noise_per_z2_ * static_cast<float>(std::abs(d)),
+                   q.label};
+  }
 }
 
 // Step 3 for every tile, then each region's moments and normal from its cells; regions left
@@ -331,25 +441,36 @@ int PlaneTileGrower::refineAndSum(const OrganizedCloud& cloud, int regions) {
   }
   std::uint8_t* labels = labels_.ptr<std::uint8_t>(0);
   const cv::Vec3f* points = cloud.row(0);
-  std::array<int, 9> candidates{};
+  // Whole tiles (every valid cell nearest to the tile's own plane among the planes it passes) are the
+  // cores the borders grow from; the cells of the other tiles are left to the growth, so that every
+  // cell is connected to its region's core (a region without a whole tile keeps its partial tiles).
+  std::fill(has_whole_tile_.begin(), has_whole_tile_.begin() + regions, false);
   for (int i = 0; i < static_cast<int>(tiles_.size()); ++i) {
-    const Tile& tile = tiles_[i];
-    const int count = candidatesOf(i, &candidates);
-    if (count == 0) continue;
-    std::uint8_t* tile_labels = labels + (tile.view.points - points);
-    const int labelled = labelTile(tile, tile_labels, candidates.data(), count);
-    if (labelled == 0) continue;
-    if (count == 1 && static_cast<float>(labelled) == tile.sums.n) {
-      addTileSums(tile.sums, tile.ref, &regions_[candidates[0]].sums);  // every cell joined
-      tiles_[i].whole_label = regions_[candidates[0]].label;
-      continue;
-    }
-    for (int j = 0; j < count; ++j) {
-      const PixelPlane& q = pixel_planes_[candidates[j]];
-      const TileSums s = sumTileLabel(tile.view, tile.ref, tile_labels, cols_, q.label);
-      if (s.n > 0.0f) addTileSums(s, tile.ref, &regions_[candidates[j]].sums);
+    Tile& tile = tiles_[i];
+    TileCandidates& t = tile_candidates_[i];
+    t.count = candidatesOf(i, &t.region);
+    tile.whole_label = 0;
+    if (tile.region < 0) continue;
+    const int labelled = labelOwnTile(tile, t, labels + (tile.view.points - points));
+    if (static_cast<float>(labelled) == tile.sums.n) {
+      addTileSums(tile.sums, tile.ref, &regions_[tile.region].sums);  // every cell joined
+      tile.whole_label = pixel_planes_[tile.region].label;
+      has_whole_tile_[tile.region] = true;
     }
   }
+  for (Tile& tile : tiles_) {
+    if (tile.region < 0 || tile.whole_label != 0) continue;
+    std::uint8_t* tile_labels = labels + (tile.view.points - points);
+    if (has_whole_tile_[tile.region]) {
+      for (int r = 0; r < tile.view.rows; ++r) std::memset(tile_labels + r * cols_, 0, tile.view.cols);
+    } else {
+      const std::uint8_t label = pixel_planes_[tile.region].label;
+      const TileSums part = sumTileLabel(tile.view, tile.ref, tile_labels, cols_, label);
+      if (part.n > 0.0f) addTileSums(part, tile.ref, &regions_[tile.region].sums);
+    }
+  }
+  refitPixelPlanes(regions);
+  growBorders(cloud);
   // Keep the regions still large enough, renumbered 1..kept in order.
   std::array<std::uint8_t, 256> relabel{};
   std::array<int, 256> new_index{};

@@ -22,10 +22,15 @@ namespace deepnav {
 //     tile graph: a tile joins when its normal agrees with the region's, its centroid passes the
 //     point-to-plane test and the region's MSE with it passes the region test (all from the
 //     moments, refitted after every tile); a region smaller than min_area_px releases its tiles;
-//  3. pixel refinement: every valid cell of a region's tiles and of the tiles around them joins
-//     the nearest of the neighbouring regions' planes whose point test it passes (so boundaries
-//     are cut at the cell, not at the tile), and each region's moments and normal are taken from
-//     the cells it ends with.
+//  3. pixel refinement (so boundaries are cut at the cell, not at the tile): a region's tiles whose
+//     every valid cell is nearest to its plane (of the planes of the tile and its 8 neighbours that
+//     the cell passes) are its core; the regions then grow breadth-first from their cores, all at
+//     once, into the other cells of their tiles and of the tiles around them, a cell joining the
+//     region that reaches it when that region's plane is the nearest it passes; the cells left over
+//     then join any region that reaches them and whose point test they pass. Each region is thus
+//     one connected set of cells, as in the pixel grower (the nearest plane per cell alone, the
+//     first version, left specks of one plane inside the other along intersection lines), and its
+//     moments and normal are taken from the cells it ends with.
 // The outputs are PlaneRegionGrower's: a label grid (0 = no plane), one PlaneRegion per label
 // (moments, noise-corrected normal, cell count) and the 4-neighbour adjacency of the labels.
 // All buffers are sized in init(); grow() allocates nothing.
@@ -95,7 +100,13 @@ class PlaneTileGrower {
   bool admits(const GrowingRegion& r, const Tile& t) const;
   int refineAndSum(const OrganizedCloud& cloud, int regions);
   int candidatesOf(int tile, std::array<int, 9>* candidates) const;
-  int labelTile(const Tile& tile, std::uint8_t* labels, const int* candidates, int count);
+  struct TileCandidates;
+  int labelOwnTile(const Tile& tile, const TileCandidates& t, std::uint8_t* labels);
+  bool passes(const PixelPlane& q, const cv::Vec3f& p) const;
+  void growBorders(const OrganizedCloud& cloud);
+  void refitPixelPlanes(int regions);
+  int nearestPassing(const TileCandidates& t, const cv::Vec3f& p) const;
+  bool mayHold(const TileCandidates& t, int region, const cv::Vec3f& p) const;
   void findAdjacency(int regions);
   Eigen::Matrix3d noiseScatter(const ScatterSums& sums, double sum_z2) const;
 
@@ -113,6 +124,15 @@ class PlaneTileGrower {
   std::vector<std::int32_t> queue_;
   std::vector<PlaneRegion> regions_;
   std::vector<PixelPlane> pixel_planes_;
+  // The regions whose cells a tile may hold (its own and its 8 neighbours'), for the border growth.
+  struct TileCandidates {
+    std::array<int, 9> region{};
+    int count = 0;
+  };
+  std::vector<TileCandidates> tile_candidates_;
+  std::vector<bool> has_whole_tile_;    // per region, this frame
+  std::vector<std::int32_t> tile_row_of_, tile_col_of_;  // tile row of a cell row, tile column of a cell column
+  std::vector<std::int32_t> cell_queue_;  // the border growth's queue: each cell enters once
   std::vector<int> region_of_label_;  // label -> region index, -1 once dropped
   int attempt_ = 0;
   int seeds_tried_ = 0;
