@@ -21,15 +21,15 @@ int windowSum(const cv::Mat& image, int u, int v, int w) {
   return sum;
 }
 
-// Zero-mean SAD of the (2w+1)^2 window centred at (ul, vl) of the left image against the N windows
+// Zero-mean SAD of the (2w+1)^2 window centred at (ul, vl) of the left image (pixel sum left_sum)
+// against the N windows
 // centred at (ur + k, vr), k = 0 .. N - 1, of the right one (all inside): the two cameras of a
 // housing rarely share gain and vignetting. Each cost is the same chain of double operations as a
 // window on its own; the N chains run side by side in registers, so that they overlap instead of
 // each waiting on its own additions (about 4 cycles each, 121 of them for w = 5).
 template <int N>
-void zeroMeanSads(const cv::Mat& left, const cv::Mat& right, int ul, int vl, int ur, int vr, int w,
-                  double* cost) {
-  const int left_sum = windowSum(left, ul, vl, w);
+void zeroMeanSads(const cv::Mat& left, const cv::Mat& right, int ul, int vl, int left_sum, int ur, int vr,
+                  int w, double* cost) {
   const int area = (2 * w + 1) * (2 * w + 1);
   std::array<double, N> offset;
   std::array<double, N> sad{};
@@ -48,7 +48,7 @@ void zeroMeanSads(const cv::Mat& left, const cv::Mat& right, int ul, int vl, int
   std::copy(sad.begin(), sad.end(), cost);
 }
 
-using ZeroMeanSadsFn = void (*)(const cv::Mat&, const cv::Mat&, int, int, int, int, int, double*);
+using ZeroMeanSadsFn = void (*)(const cv::Mat&, const cv::Mat&, int, int, int, int, int, int, double*);
 
 template <std::size_t... I>
 constexpr std::array<ZeroMeanSadsFn, sizeof...(I)> zeroMeanSadsTable(std::index_sequence<I...>) {
@@ -209,7 +209,8 @@ bool StereoFeatureMatcher::refineRightColumn(const cv::Mat& left_grey, const cv:
     return false;
   if (ur - search - w < 0 || ur + search + w >= right_grey.cols) return false;
   double cost[kMaxWindows];
-  kZeroMeanSads[2 * search](left_grey, right_grey, ul, v, ur - search, v, w, cost);
+  const int left_sum = windowSum(left_grey, ul, v, w);  // one left window for every cost below
+  kZeroMeanSads[2 * search](left_grey, right_grey, ul, v, left_sum, ur - search, v, w, cost);
   int best_k = -search;
   for (int k = -search; k <= search; ++k) {
     if (cost[k + search] < cost[best_k + search]) best_k = k;
@@ -221,9 +222,9 @@ bool StereoFeatureMatcher::refineRightColumn(const cv::Mat& left_grey, const cv:
   // Rectified rows: the right window one row up or down must fit worse (a corner matched on the
   // wrong row fits better towards its true row).
   double row_cost = 0.0;
-  zeroMeanSads<1>(left_grey, right_grey, ul, v, ur + best_k, v - 1, w, &row_cost);
+  zeroMeanSads<1>(left_grey, right_grey, ul, v, left_sum, ur + best_k, v - 1, w, &row_cost);
   if (row_cost <= c0) return false;
-  zeroMeanSads<1>(left_grey, right_grey, ul, v, ur + best_k, v + 1, w, &row_cost);
+  zeroMeanSads<1>(left_grey, right_grey, ul, v, left_sum, ur + best_k, v + 1, w, &row_cost);
   if (row_cost <= c0) return false;
   const double c_minus = cost[best_k + search - 1];
   const double c_plus = cost[best_k + search + 1];

@@ -297,14 +297,8 @@ int PlaneTileGrower::labelOwnTile(const Tile& tile, const TileCandidates& t, std
         best = cv::v_select(pass, dist, best);
         best_label = cv::v_select(pass, cv::v_setall_f32(q.label), best_label);
       }
-      // own plane: kept unless another passing plane is nearer by more than half the own distance
-      const PixelPlane& o = pixel_planes_[tile.region];
-      const cv::v_float32x4 own_dist = cv::v_abs(cv::v_setall_f32(o.nx) * x + cv::v_setall_f32(o.ny) * y +
-                                                 cv::v_setall_f32(o.nz) * z - cv::v_setall_f32(o.d));
-      const cv::v_float32x4 own_pass = valid & (own_dist <= v_gamma + cv::v_setall_f32(o.k_per_z) * z);
-      const cv::v_float32x4 keep = own_pass & (best_label == v_own);
       alignas(16) float out[4];
-      cv::v_store_aligned(out, cv::v_select(keep, v_own, v_zero));
+      cv::v_store_aligned(out, cv::v_select(best_label == v_own, v_own, v_zero));
       for (int k = 0; k < 4; ++k) {
         l[c + k] = static_cast<std::uint8_t>(out[k]);
         labelled += out[k] != 0.0f;
@@ -320,17 +314,21 @@ int PlaneTileGrower::labelOwnTile(const Tile& tile, const TileCandidates& t, std
   return labelled;
 }
 
-bool PlaneTileGrower::passes(const PixelPlane& q, const cv::Vec3f& p) const {
-  const float dist = std::abs(q.nx * p[0] + q.ny * p[1] + q.nz * p[2] - q.d);
+float PlaneTileGrower::distance(const PixelPlane& q, const cv::Vec3f& p) {
+  return std::abs(q.nx * p[0] + q.ny * p[1] + q.nz * p[2] - q.d);
+}
+
+bool PlaneTileGrower::passes(const PixelPlane& q, const cv::Vec3f& p, float dist) const {
   return dist <= static_cast<float>(config_.max_point_distance_m) + q.k_per_z * p[2];
 }
 
-// Step 3b: the regions grow from the labelled cells of their tiles into the unlabelled valid cells
-// around them, breadth-first and all at once, a cell joining the first region that reaches it and
-// whose point test it passes, within the tiles where that region may hold cells (its own and their
-// 8 neighbours). Boundaries so follow the cells as in the pixel grower: each region stays connected
-// and no region leaves specks inside another (taking, per cell, the nearest plane did both where two
-// planes meet: near the intersection line the noise decides which plane is nearer).
+// Step 3b: the regions grow from the labelled cells of their core tiles into the unlabelled valid
+// cells around them, breadth-first and all at once, within the tiles where a region may hold cells
+// (its own and their 8 neighbours): first a cell joins a region that reaches it only if that region's
+// plane is the nearest it passes, then the cells still free join any region that reaches them and
+// whose test they pass. Boundaries so follow the cells as in the pixel grower: each region stays
+// connected and no region leaves specks inside another (taking, per cell, the nearest plane alone did
+// both where two planes meet: near the intersection line the noise decides which plane is nearer).
 void PlaneTileGrower::growBorders(const OrganizedCloud& cloud) {
   std::uint8_t* labels = labels_.ptr<std::uint8_t>(0);
   const cv::Vec3f* points = cloud.row(0);
@@ -387,7 +385,10 @@ void PlaneTileGrower::growBorders(const OrganizedCloud& cloud) {
 // True when the region is one a tile may hold and p passes its point test.
 bool PlaneTileGrower::mayHold(const TileCandidates& t, int region, const cv::Vec3f& p) const {
   for (int i = 0; i < t.count; ++i) {
-    if (t.region[i] == region) return passes(pixel_planes_[region], p);
+    if (t.region[i] == region) {
+      const PixelPlane& q = pixel_planes_[region];
+      return passes(q, p, distance(q, p));
+    }
   }
   return false;
 }
@@ -399,8 +400,8 @@ int PlaneTileGrower::nearestPassing(const TileCandidates& t, const cv::Vec3f& p)
   float best_dist = std::numeric_limits<float>::infinity();
   for (int i = 0; i < t.count; ++i) {
     const PixelPlane& q = pixel_planes_[t.region[i]];
-    const float dist = std::abs(q.nx * p[0] + q.ny * p[1] + q.nz * p[2] - q.d);
-    if (dist <= static_cast<float>(config_.max_point_distance_m) + q.k_per_z * p[2] && dist < best_dist) {
+    const float dist = distance(q, p);
+    if (passes(q, p, dist) && dist < best_dist) {
       best_dist = dist;
       best = t.region[i];
     }

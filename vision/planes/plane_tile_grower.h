@@ -102,7 +102,8 @@ class PlaneTileGrower {
   int candidatesOf(int tile, std::array<int, 9>* candidates) const;
   struct TileCandidates;
   int labelOwnTile(const Tile& tile, const TileCandidates& t, std::uint8_t* labels);
-  bool passes(const PixelPlane& q, const cv::Vec3f& p) const;
+  static float distance(const PixelPlane& q, const cv::Vec3f& p);  // |n.p - d|, m
+  bool passes(const PixelPlane& q, const cv::Vec3f& p, float dist) const;
   void growBorders(const OrganizedCloud& cloud);
   void refitPixelPlanes(int regions);
   int nearestPassing(const TileCandidates& t, const cv::Vec3f& p) const;
