@@ -29,48 +29,54 @@ cv::Mat sceneImage(cv::Size size) {
   return image;
 }
 
-void expectSameAsOpenCv(double sigma_px, const std::vector<cv::Size>& sizes) {
+void expectSameAsOpenCv(double sigma_px, int kernel_px, const std::vector<cv::Size>& sizes) {
   FixedPointGaussian blur;
-  ASSERT_TRUE(blur.init(sigma_px, sizes)) << "sigma " << sigma_px;
+  ASSERT_TRUE(blur.init(sigma_px, kernel_px, sizes)) << "sigma " << sigma_px << ", kernel " << kernel_px;
   for (const cv::Size& size : sizes) {
     for (const cv::Mat& image : {randomImage(size, 7), sceneImage(size)}) {
       cv::Mat expected, got;
-      cv::GaussianBlur(image, expected, cv::Size(0, 0), sigma_px);
+      cv::GaussianBlur(image, expected, cv::Size(kernel_px, kernel_px), sigma_px);
       blur.apply(image, &got);
       ASSERT_EQ(got.size(), size);
       EXPECT_EQ(cv::norm(expected, got, cv::NORM_INF), 0.0)
-          << "sigma " << sigma_px << ", " << size.width << "x" << size.height;
+          << "sigma " << sigma_px << ", kernel " << kernel_px << ", " << size.width << "x" << size.height;
     }
   }
 }
 
 TEST(FixedPointGaussian, ReproducesOpenCvOnTheOrbPyramidSizes) {
-  // 688x516 and its levels at scale 1.2 (the ORB extractor's defaults), sigma 2 px: 13 taps.
-  expectSameAsOpenCv(2.0, {{688, 516}, {573, 430}, {478, 358}});
+  // 688x516 and its levels at scale 1.2 (the ORB extractor's defaults), sigma 2 px: 7 taps (the
+  // extractor's default, as OpenCV's ORB and ORB-SLAM) and OpenCV's own 13.
+  for (int kernel_px : {7, 0}) expectSameAsOpenCv(2.0, kernel_px, {{688, 516}, {573, 430}, {478, 358}});
 }
 
 TEST(FixedPointGaussian, ReproducesOpenCvForOddSizesAndOtherSigmas) {
   // Widths that leave a scalar tail after the 16-pixel vectors, and kernels of 5 to 19 taps.
-  for (double sigma_px : {0.8, 1.2, 2.0, 3.0}) expectSameAsOpenCv(sigma_px, {{37, 29}, {101, 64}, {255, 17}});
+  for (double sigma_px : {0.8, 1.2, 2.0, 3.0}) expectSameAsOpenCv(sigma_px, 0, {{37, 29}, {101, 64}, {255, 17}});
+  for (int kernel_px : {3, 5, 9}) expectSameAsOpenCv(2.0, kernel_px, {{37, 29}, {101, 64}});
 }
 
 TEST(FixedPointGaussian, ReadsOpenCvsWeights) {
   FixedPointGaussian blur;
-  ASSERT_TRUE(blur.init(2.0, {{64, 64}}));
+  ASSERT_TRUE(blur.init(2.0, 0, {{64, 64}}));
   EXPECT_EQ(blur.radiusPx(), 6);  // OpenCV: ksize = round(2 * 3 * sigma + 1) | 1 = 13 for 8-bit images
+  ASSERT_TRUE(blur.init(2.0, 7, {{64, 64}}));
+  EXPECT_EQ(blur.radiusPx(), 3);
 }
 
 TEST(FixedPointGaussian, RefusesWhatItCannotReproduce) {
   FixedPointGaussian blur;
-  EXPECT_FALSE(blur.init(0.0, {{64, 64}}));
-  EXPECT_FALSE(blur.init(-1.0, {{64, 64}}));
-  EXPECT_FALSE(blur.init(5.0, {{256, 256}}));  // 31 taps: wider than kMaxRadiusPx
-  EXPECT_FALSE(blur.init(2.0, {{12, 64}}));     // narrower than the kernel: reflection not handled
+  EXPECT_FALSE(blur.init(0.0, 0, {{64, 64}}));
+  EXPECT_FALSE(blur.init(-1.0, 0, {{64, 64}}));
+  EXPECT_FALSE(blur.init(5.0, 0, {{256, 256}}));  // 31 taps: wider than kMaxRadiusPx
+  EXPECT_FALSE(blur.init(2.0, 0, {{12, 64}}));     // narrower than the kernel: reflection not handled
+  EXPECT_FALSE(blur.init(2.0, 6, {{64, 64}}));     // an even kernel
+  EXPECT_FALSE(blur.init(2.0, 1, {{64, 64}}));     // one tap: no smoothing to reproduce
 }
 
 TEST(FixedPointGaussian, DoesNotReallocateAnImageOfTheSameSize) {
   FixedPointGaussian blur;
-  ASSERT_TRUE(blur.init(2.0, {{96, 80}}));
+  ASSERT_TRUE(blur.init(2.0, 7, {{96, 80}}));
   cv::Mat dst(80, 96, CV_8UC1);
   const std::uint8_t* before = dst.data;
   blur.apply(randomImage({96, 80}, 1), &dst);

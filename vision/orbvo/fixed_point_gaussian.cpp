@@ -157,9 +157,12 @@ constexpr auto kBlurByRadius = blurTable(std::make_index_sequence<FixedPointGaus
 
 }  // namespace
 
-bool FixedPointGaussian::init(double sigma_px, const std::vector<cv::Size>& sizes) {
+bool FixedPointGaussian::init(double sigma_px, int kernel_px, const std::vector<cv::Size>& sizes) {
   radius_px_ = 0;
-  if (!(sigma_px > 0.0) || !readWeights(sigma_px)) {
+  sigma_px_ = sigma_px;
+  kernel_ = cv::Size(kernel_px, kernel_px);
+  const bool kernel_ok = kernel_px == 0 || (kernel_px % 2 == 1 && kernel_px >= 3);
+  if (!(sigma_px > 0.0) || !kernel_ok || !readWeights()) {
     radius_px_ = 0;
     return false;
   }
@@ -167,7 +170,7 @@ bool FixedPointGaussian::init(double sigma_px, const std::vector<cv::Size>& size
   for (const cv::Size& s : sizes) max_width_px = std::max(max_width_px, s.width);
   sums_.assign(static_cast<std::size_t>(max_width_px + 2 * radius_px_), 0);
   for (const cv::Size& s : sizes) {
-    if (!reproduces(sigma_px, s)) {
+    if (!reproduces(s)) {
       radius_px_ = 0;
       return false;
     }
@@ -177,13 +180,13 @@ bool FixedPointGaussian::init(double sigma_px, const std::vector<cv::Size>& size
 
 // A vertical line of 255 in a flat image: every column sum is 255 * 256, so the output next to the line
 // is (255 * 256 * w + 2^15) >> 16 = floor(w + (128 - w) / 256) = w for 0 <= w <= 128.
-bool FixedPointGaussian::readWeights(double sigma_px) {
+bool FixedPointGaussian::readWeights() {
   constexpr int kSide = 4 * kMaxRadiusPx + 3;
   constexpr int kLine = kSide / 2;
   cv::Mat line(kSide, kSide, CV_8UC1, cv::Scalar(0));
   line.col(kLine).setTo(255);
   cv::Mat out;
-  cv::GaussianBlur(line, out, cv::Size(0, 0), sigma_px);
+  cv::GaussianBlur(line, out, kernel_, sigma_px_);
   const std::uint8_t* row = out.ptr<std::uint8_t>(kLine);
   if (row[kLine - kMaxRadiusPx - 1] != 0) return false;  // wider than kMaxRadiusPx
   int sum = row[kLine];
@@ -199,7 +202,7 @@ bool FixedPointGaussian::readWeights(double sigma_px) {
 }
 
 // Random texture and a saturated image of this size, through both blurs.
-bool FixedPointGaussian::reproduces(double sigma_px, cv::Size size) {
+bool FixedPointGaussian::reproduces(cv::Size size) {
   if (size.width <= 2 * radius_px_ || size.height <= 2 * radius_px_) return false;
   cv::Mat image(size, CV_8UC1);
   cv::RNG rng(0x5eed);
@@ -207,7 +210,7 @@ bool FixedPointGaussian::reproduces(double sigma_px, cv::Size size) {
   cv::Mat expected, got;
   for (int trial = 0; trial < 2; ++trial) {
     if (trial == 1) image.setTo(255);
-    cv::GaussianBlur(image, expected, cv::Size(0, 0), sigma_px);
+    cv::GaussianBlur(image, expected, kernel_, sigma_px_);
     apply(image, &got);
     if (cv::norm(expected, got, cv::NORM_INF) != 0.0) return false;
   }

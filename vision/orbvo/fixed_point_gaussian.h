@@ -6,7 +6,7 @@
 
 namespace deepnav {
 
-// Gaussian smoothing of 8-bit images that reproduces cv::GaussianBlur(src, dst, Size(0, 0), sigma) bit
+// Gaussian smoothing of 8-bit images that reproduces cv::GaussianBlur(src, dst, Size(k, k), sigma) bit
 // for bit (BORDER_REFLECT_101) in about half its instructions: the blur before BRIEF sampling was 40 % of
 // the ORB VO's instructions per pair.
 //
@@ -27,9 +27,10 @@ class FixedPointGaussian {
  public:
   static constexpr int kMaxRadiusPx = 10;  // kernels up to 21 taps: sigma up to about 3.3 px
 
-  // False when this OpenCV's blur with `sigma_px` cannot be reproduced for every size in `sizes`
-  // (CV_8UC1 images of these sizes are what apply() accepts).
-  bool init(double sigma_px, const std::vector<cv::Size>& sizes);
+  // False when this OpenCV's blur with `sigma_px` and a kernel of `kernel_px` x `kernel_px` taps (odd;
+  // 0: OpenCV's own choice from sigma, 2 * round(3 sigma) + 1 for 8-bit images) cannot be reproduced for
+  // every size in `sizes` (CV_8UC1 images of these sizes are what apply() accepts).
+  bool init(double sigma_px, int kernel_px, const std::vector<cv::Size>& sizes);
 
   // `src` CV_8UC1 of an init() size, not a submatrix (cv::GaussianBlur reads a submatrix's surroundings
   // as its border); `dst` another image, (re)allocated only when its size or type differ.
@@ -38,9 +39,11 @@ class FixedPointGaussian {
   int radiusPx() const { return radius_px_; }
 
  private:
-  bool readWeights(double sigma_px);
-  bool reproduces(double sigma_px, cv::Size size);
+  bool readWeights();
+  bool reproduces(cv::Size size);
 
+  double sigma_px_ = 0.0;
+  cv::Size kernel_;  // as given to cv::GaussianBlur
   int radius_px_ = 0;
   std::array<std::uint16_t, kMaxRadiusPx + 1> weight_{};  // weight_[k] for offsets -k and +k
   std::vector<std::uint16_t> sums_;  // one row of column sums with radius_px_ reflected at each end

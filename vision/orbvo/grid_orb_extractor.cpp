@@ -14,7 +14,9 @@ bool validConfig(const OrbExtractorConfig& c) {
          c.scale_factor > 1.0 && c.scale_factor <= 2.0 && c.fast_threshold_max >= 1 &&
          c.fast_threshold_max <= 255 && c.fast_threshold_min >= 1 &&
          c.fast_threshold_min <= c.fast_threshold_max && c.fast_contrast_gain > 0.0 &&
-         c.smoothing_sigma_px > 0.0;
+         c.smoothing_sigma_px > 0.0 &&
+         (c.smoothing_kernel_px == 0 ||
+          (c.smoothing_kernel_px % 2 == 1 && c.smoothing_kernel_px >= 3 && c.smoothing_kernel_px <= 21));
 }
 
 }  // namespace
@@ -46,7 +48,7 @@ bool GridOrbExtractor::init(const OrbExtractorConfig& config, int width_px, int 
   }
   std::vector<cv::Size> level_sizes;
   for (const cv::Mat& s : smoothed_) level_sizes.push_back(s.size());
-  exact_blur_ = blur_.init(config.smoothing_sigma_px, level_sizes);
+  exact_blur_ = blur_.init(config.smoothing_sigma_px, config.smoothing_kernel_px, level_sizes);
   corner_map_fast_ = false;
   if (config.fast_corner_map) {
     corner_map_.init(width_px, height_px);
@@ -79,7 +81,8 @@ void GridOrbExtractor::extractLevel(int level, std::vector<OrbFeature>* features
   if (exact_blur_ && !image.isSubmatrix()) {
     blur_.apply(image, &smoothed_[level]);  // the same bits as cv::GaussianBlur, checked in init()
   } else {
-    cv::GaussianBlur(image, smoothed_[level], cv::Size(0, 0), config_.smoothing_sigma_px);
+    const cv::Size kernel(config_.smoothing_kernel_px, config_.smoothing_kernel_px);
+    cv::GaussianBlur(image, smoothed_[level], kernel, config_.smoothing_sigma_px);
   }
   SteeredBrief::Offsets& offsets = brief_offsets_[level];
   const int smoothed_step = static_cast<int>(smoothed_[level].step1());

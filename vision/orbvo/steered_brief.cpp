@@ -122,9 +122,12 @@ void SteeredBrief::describe(const cv::Mat& smoothed, const Offsets& offsets, int
   const std::uint8_t* centre = smoothed.ptr<std::uint8_t>(y) + x;
   for (int word = 0; word < 4; ++word) {
     std::uint64_t bits = 0;
-    for (int i = 0; i < 64; ++i, offset += 2) {
-      bits |= static_cast<std::uint64_t>(centre[offset[0]] < centre[offset[1]]) << i;
+    // unrolled, the shifts are constants: 8 instructions per bit instead of 11
+#pragma GCC unroll 64
+    for (int i = 0; i < 64; ++i) {
+      bits |= static_cast<std::uint64_t>(centre[offset[2 * i]] < centre[offset[2 * i + 1]]) << i;
     }
+    offset += 128;
     (*out)[word] = bits;
   }
 }
