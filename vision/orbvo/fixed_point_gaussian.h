@@ -15,9 +15,10 @@ namespace deepnav {
 //   out = (sum_i sum_j w_i w_j I(y+i, x+j) + 2^15) >> 16.
 // Here the column sums V = sum_i w_i I (at most 255 * 256, exact in 16 bits) come first. The row pass
 // on NEON multiplies V into 32-bit accumulators (umlal: one instruction per tap and half); on SSE2, which
-// has no widening multiply-add, it splits V = 256 hi + lo so that both partial sums A = sum w_j hi and
-// B = sum w_j lo stay in 16-bit lanes, and
-//   out = (256 A + B + 2^15) >> 16 = (A + (B >> 8) + 128) >> 8        (2^15 = 128 * 256).
+// has no widening multiply-add, the column sums are stored as U = V - 2^15 (int16) and the row pass uses
+// the pairwise multiply-add of signed 16-bit lanes into 32 bits (pmaddwd) on the lanes of x - k and
+// x + k interleaved; as the weights sum to 256,
+//   out = (sum_j w_j U(x+j) + 2^23 + 2^15) >> 16.
 //
 // The weights are read from cv::GaussianBlur itself in init() (a vertical line of 255 comes out as
 // round(255 w / 256) = w for w <= 128), and init() checks the whole result against cv::GaussianBlur on

@@ -11,6 +11,18 @@ namespace {
 
 constexpr double kMinDepthM = 1e-3;
 
+// H += w J^T J and g += w J^T r for one observation, on H's lower triangle (the caller mirrors it):
+// 21 of the 36 entries. Each entry is the same sum of the same products as Eigen's full
+// w * J^T * J, so the lower triangle, which the LDLT reads, keeps its bits.
+void addToNormalEquations(const Eigen::Vector3d& r, const Eigen::Matrix<double, 3, 6>& J, double w,
+                          Eigen::Matrix<double, 6, 6>* H, Eigen::Matrix<double, 6, 1>* g) {
+  const Eigen::Matrix<double, 3, 6> wJ = w * J;
+  for (int c = 0; c < 6; ++c) {
+    (*g)(c) += wJ.col(c).dot(r);
+    for (int k = 0; k <= c; ++k) (*H)(c, k) += wJ.col(c).dot(J.col(k));
+  }
+}
+
 // Normal equations of the current inliers; returns the number of residual rows and the cost sum w
 // e^2.
 int accumulate(const StereoRig& rig, const PoseRefinerConfig& config,
@@ -33,12 +45,12 @@ int accumulate(const StereoRig& rig, const PoseRefinerConfig& config,
     // exact.
     const double e = r.norm();
     const double w = e <= config.huber_k ? 1.0 : config.huber_k / e;
-    *H += w * J.transpose() * J;
-    *g += w * J.transpose() * r;
+    addToNormalEquations(r, J, w, H, g);
     *weighted_cost += w * e * e;
     *squared_px += e * e * observations[i].sigma_px * observations[i].sigma_px;
     rows += m;
   }
+  *H = H->selfadjointView<Eigen::Lower>();
   return rows;
 }
 
@@ -51,11 +63,17 @@ int poseResidual(const StereoRig& rig, const PoseObservation& observation,
   if (p_in_cam_m.z() < kMinDepthM) return 0;
   const StereoProjection proj = projectStereo(rig, p_in_cam_m);
   const double inv_sigma = 1.0 / observation.sigma_px;
-  // d p_in_cam / d xi = [I, -[p_in_cam]x] for p' = Exp(phi) p + dt.
-  Eigen::Matrix<double, 3, 6> d_p_d_xi;
-  d_p_d_xi.leftCols<3>().setIdentity();
-  d_p_d_xi.rightCols<3>() = -skew(p_in_cam_m);
-  *jacobian = inv_sigma * proj.d_uvr_d_p * d_p_d_xi;
+  // J = D [I, -[p]x] / sigma, D = d(u, v, u_r)/dp (stereo_projection.h). Each row d of D gives
+  // (d, d (-[p]x)) with d (-[p]x) = (d_z y - d_y z, d_x z - d_z x, d_y x - d_x y); D's zeros (u and u_r
+  // do not depend on y, v not on x) are left out.
+  const double x = p_in_cam_m.x(), y = p_in_cam_m.y(), z = p_in_cam_m.z();
+  const Eigen::Matrix3d& D = proj.d_uvr_d_p;
+  const double du_dx = inv_sigma * D(0, 0), du_dz = inv_sigma * D(0, 2);
+  const double dv_dy = inv_sigma * D(1, 1), dv_dz = inv_sigma * D(1, 2);
+  const double dr_dx = inv_sigma * D(2, 0), dr_dz = inv_sigma * D(2, 2);
+  jacobian->row(0) << du_dx, 0.0, du_dz, du_dz * y, du_dx * z - du_dz * x, -du_dx * y;
+  jacobian->row(1) << 0.0, dv_dy, dv_dz, dv_dz * y - dv_dy * z, -dv_dz * x, dv_dy * x;
+  jacobian->row(2) << dr_dx, 0.0, dr_dz, dr_dz * y, dr_dx * z - dr_dz * x, -dr_dx * y;
   residual->head<2>() = inv_sigma * (proj.uvr_px.head<2>() - observation.uv_px);
   if (observation.u_right_px < 0.0) {
     (*residual)(2) = 0.0;
