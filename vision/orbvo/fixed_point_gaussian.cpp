@@ -64,9 +64,13 @@ void columnSums(const Weights& w, const cv::Mat& src, int y, std::uint16_t* sums
       sum_lo = addNoOverflow(sum_lo, cv::v_mul_wrap(addNoOverflow(a_lo, b_lo), wv[k]));
       sum_hi = addNoOverflow(sum_hi, cv::v_mul_wrap(addNoOverflow(a_hi, b_hi), wv[k]));
     }
-    const cv::v_uint16x8 bias = cv::v_setall_u16(kSumBias);
-    cv::v_store(sums + x, sum_lo ^ bias);
-    cv::v_store(sums + x + 8, sum_hi ^ bias);
+    if constexpr (kSumBias != 0) {
+      const cv::v_uint16x8 bias = cv::v_setall_u16(kSumBias);
+      sum_lo = sum_lo ^ bias;
+      sum_hi = sum_hi ^ bias;
+    }
+    cv::v_store(sums + x, sum_lo);
+    cv::v_store(sums + x + 8, sum_hi);
   }
 #endif
   for (; x < src.cols; ++x) {
