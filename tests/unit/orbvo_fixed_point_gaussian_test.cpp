@@ -45,8 +45,8 @@ void expectSameAsOpenCv(double sigma_px, int kernel_px, const std::vector<cv::Si
 }
 
 TEST(FixedPointGaussian, ReproducesOpenCvOnTheOrbPyramidSizes) {
-  // 688x516 and its levels at scale 1.2 (the ORB extractor's defaults), sigma 2 px: 7 taps (the
-  // extractor's default, as OpenCV's ORB and ORB-SLAM) and OpenCV's own 13.
+  // 688x516 and its levels at scale 1.2 (the ORB extractor's defaults), sigma 2 px: OpenCV's own 13 taps
+  // (the extractor's default) and 7 (OpenCV's ORB and ORB-SLAM, extractor.smoothing_kernel_px = 7).
   for (int kernel_px : {7, 0}) expectSameAsOpenCv(2.0, kernel_px, {{688, 516}, {573, 430}, {478, 358}});
 }
 

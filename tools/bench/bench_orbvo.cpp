@@ -132,8 +132,8 @@ void BM_OrbExtractOneImage(benchmark::State& state) {
 }
 
 // The smoothing before BRIEF sampling on one 688x516 image, sigma 2 px: OpenCV's cv::GaussianBlur
-// (fixed_point:0) against FixedPointGaussian (fixed_point:1), which gives the same bits, with 7 taps (the
-// extractor's default, as OpenCV's ORB and ORB-SLAM) or OpenCV's own choice for the sigma (kernel:0, 13).
+// (fixed_point:0) against FixedPointGaussian (fixed_point:1), which gives the same bits, with OpenCV's own
+// kernel for the sigma (kernel:0, 13 taps: the extractor's default) or 7 taps (OpenCV's ORB and ORB-SLAM).
 void BM_BriefSmoothing(benchmark::State& state) {
   const cv::Mat& image = sequence()[0].left;
   const int kernel_px = static_cast<int>(state.range(1));

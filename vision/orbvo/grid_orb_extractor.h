@@ -30,7 +30,7 @@ struct OrbExtractorConfig {
   double fast_contrast_gain = 0.8;  // first threshold per unit of cell intensity stddev, > 0
   double smoothing_sigma_px = 2.0;  // Gaussian applied before BRIEF sampling (as ORB), > 0
   // Taps of that Gaussian, odd in [3, 21]; 0: OpenCV's choice from the sigma (13 at 2 px)
-  int smoothing_kernel_px = 7;
+  int smoothing_kernel_px = 0;
   // Corners from FastCornerMap (the same corners as cv::FAST per cell, checked at init, in fewer
   // instructions); false calls cv::FAST per cell, the reference the tests compare with.
   bool fast_corner_map = true;
