@@ -323,6 +323,7 @@ ModalityCount modalityCount(std::uint64_t offered, const SourceCounters& c) {
   m.fused = c.accepted;
   m.rejected_gate = c.rejected;
   m.rejected_other = offered > m.fused + m.rejected_gate ? offered - m.fused - m.rejected_gate : 0;
+  m.gate_resets = c.gate_resets;
   return m;
 }
 

@@ -37,6 +37,7 @@ struct ModalityCount {
   std::uint64_t fused = 0;
   std::uint64_t rejected_gate = 0;
   std::uint64_t rejected_other = 0;
+  std::uint64_t gate_resets = 0;  // lockout recoveries (nav/ekf/gate_reset.h)
 };
 struct ModalityCounts {
   ModalityCount dvl, compass, depth, attitude, markers, vo_orb, vo_planes;

@@ -122,7 +122,7 @@ std::string neesJson(const NeesSummary& n) {
 std::string modalityJson(const ModalityCount& m) {
   std::ostringstream o;
   o << "{\"offered\": " << m.offered << ", \"fused\": " << m.fused << ", \"rejected_gate\": " << m.rejected_gate
-    << ", \"rejected_other\": " << m.rejected_other << "}";
+    << ", \"rejected_other\": " << m.rejected_other << ", \"gate_resets\": " << m.gate_resets << "}";
   return o.str();
 }
 

@@ -469,14 +469,19 @@ bool Ekf::admitAidingSample(NavSource src, TimeUs t_us, std::uint64_t fingerprin
   if (angles) {
     for (int i = 0; i < 3; ++i) change[i] = wrapPi(change[i]);
   }
-  health_.noteChange(src, value, change.cwiseAbs().maxCoeff(), tolerance);
+  resetIfLockedOut(src, t_us, value, change.cwiseAbs().maxCoeff(), tolerance);
+  return true;
+}
+
+void Ekf::resetIfLockedOut(NavSource src, TimeUs t_us, const Eigen::Vector3d& value, double change,
+                           double tolerance) {
+  health_.noteChange(src, value, change, tolerance);
   if (aligned_ && health_.source(src).smooth_streak >= kGateResetSmoothSamples &&
       health_.lockedOut(src, t_us, config_.gate_reset_after_us)) {
     health_.noteGateReset(src, t_us);
     ++counters_.gate_resets;
     submit(makeLogged(t_us, GateReset{t_us, src}), kSrcCount, true);
   }
-  return true;
 }
 
 FuseResult Ekf::fuseDvl(const DvlSample& m) {
@@ -520,6 +525,14 @@ FuseResult Ekf::fuseAttitude(const AttitudeSample& m) {
 
 FuseResult Ekf::fusePose(const PoseMeasurement& m) {
   const bool valid = isValidPose(m) && m.source < kSrcCount;
+  // Marker poses can lock out as the other aiding sources do (gate_reset.h): consecutive poses that agree
+  // within the gate window on a position the filter keeps refusing. Not checked for frozen samples: a
+  // still camera on a noiseless image may repeat a pose bit for bit.
+  if (valid && initialised_ && m.source == kSrcMarkers) {
+    const Eigen::Vector3d change = m.p_robot_in_odom_m - health_.source(kSrcMarkers).last_value;
+    resetIfLockedOut(kSrcMarkers, m.t_us, m.p_robot_in_odom_m, change.cwiseAbs().maxCoeff(),
+                     config_.gate_pose_sigma * config_.init_pos_sigma_m);
+  }
   return submit(makeLogged(m.t_us, m), m.source < kSrcCount ? m.source : kSrcMarkers, valid);
 }
 

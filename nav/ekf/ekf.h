@@ -138,6 +138,9 @@ class Ekf {
   // reset, so that random garbage never opens the gate).
   bool admitAidingSample(NavSource src, TimeUs t_us, std::uint64_t fingerprint, const Eigen::Vector3d& value,
                          bool angles, double tolerance);
+  // The lockout check of one sample (admitAidingSample's tail; marker poses come here directly): counts the
+  // sample's change against the one before, logs a gate reset before it when the source is locked out.
+  void resetIfLockedOut(NavSource src, TimeUs t_us, const Eigen::Vector3d& value, double change, double tolerance);
 
   EkfConfig config_;
   bool initialised_ = false;

@@ -187,7 +187,7 @@ const std::array kEkfParams = {
       "an IMU sample bit-identical (rates and specific force) to the previous n-1 is refused as frozen and the state coasts (0: off; else >= 2)",
       DEEPNAV_PARAM_FIELD(EkfConfig, imu_stuck_after_samples)},
     D{"gate_reset_after_s", ParamType::kDurationS, "s", 0, 60, "",
-      "a DVL, depth, compass or AHRS source rejected this long gets the states it observes reset to their initial sigmas (0: never)",
+      "a DVL, depth, compass, AHRS or marker source rejected this long gets the states it observes reset to their initial sigmas (0: never)",
       DEEPNAV_PARAM_FIELD(EkfConfig, gate_reset_after_us)},
     D{"coast_accel_noise_mps2_rthz", ParamType::kDouble, "m/s^2/sqrt(Hz)", 0, 10, "",
       "IMU outage: the solution coasts on the last velocity, its covariance grown for a white acceleration of this density",

@@ -122,7 +122,7 @@ struct EkfConfig {
   // on a working unit: refused, the IMU goes stale and the state coasts as in an IMU outage. 0 (the
   // bare filter's default, whose tests feed a noiseless resting IMU): not checked; boards set it.
   int imu_stuck_after_samples = 0;
-  // A DVL, depth, compass or AHRS source whose samples have all been rejected for this long (a gate
+  // A DVL, depth, compass, AHRS or marker source whose samples have all been rejected for this long (a gate
   // lockout: the state drifted away while the filter grew overconfident) gets the states it observes
   // decorrelated and their variances raised to the initial sigmas, once per period, so that the gate
   // can let it back in; 0: never.

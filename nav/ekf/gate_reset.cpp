@@ -38,6 +38,11 @@ void resetObservedStates(NavSource source, const EkfConfig& c, FilterState* s) {
     case kSrcAttitude:
       raiseBlock(es::kTheta, 2, c.init_roll_pitch_sigma_rad, s);
       break;
+    case kSrcMarkers:
+      raiseBlock(es::kP, 3, c.init_pos_sigma_m, s);
+      raiseBlock(es::kTheta, 2, c.init_roll_pitch_sigma_rad, s);
+      raise(es::kTheta + 2, c.init_yaw_sigma_rad * c.init_yaw_sigma_rad, s);
+      break;
     default:
       break;
   }
