@@ -17,6 +17,7 @@
 #include "drivers/recording/topics.h"
 #include "nav/ekf/ekf.h"
 #include "nav/ekf/mag_disturbance.h"
+#include "tests/support/resting_imu.h"
 
 namespace deepnav {
 namespace {
@@ -97,10 +98,7 @@ Trace run(const EkfConfig& config, const Disturbance& dist, double duration_s, d
           std::pow(0.2 * kDeg, 2);
       ekf->fusePose(p);
     }
-    ImuSample imu;
-    imu.t_us = t_us;
-    imu.f_imu_mps2 = Eigen::Vector3d(0.0, 0.0, 9.80665);
-    ekf->setImu(imu);
+    testing::feedRestingImu(t_us, ekf);
     for (int i = 0; i < ekf->diagnostics().size(); ++i) {
       const FusionDiagnostic& d = ekf->diagnostics().at(i);
       if (d.source == kSrcHeading) tr.compass.push_back(d);
@@ -296,10 +294,7 @@ TEST(FusionDiagnostics, GatedAndDoorRefusedMeasurementsAreReported) {
   d.t_us = ekf.state().t_us - 2'000'000;
   d.depth_m = 0.0;
   ekf.fuseDepth(d);
-  ImuSample imu;
-  imu.t_us = ekf.state().t_us + kImuPeriodUs;
-  imu.f_imu_mps2 = Eigen::Vector3d(0.0, 0.0, 9.80665);
-  ekf.setImu(imu);
+  testing::feedRestingImu(ekf.state().t_us + kImuPeriodUs, &ekf);
   // THEN each is reported with its reason; the gated one with its innovation and test ratio
   std::vector<FusionDiagnostic> got;
   for (int i = 0; i < ekf.diagnostics().size(); ++i) got.push_back(ekf.diagnostics().at(i));

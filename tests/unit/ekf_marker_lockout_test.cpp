@@ -12,6 +12,7 @@
 
 #include "base/so3.h"
 #include "nav/ekf/ekf.h"
+#include "tests/support/resting_imu.h"
 
 namespace deepnav {
 namespace {
@@ -19,6 +20,18 @@ namespace {
 constexpr TimeUs kImuPeriodUs = 10'000;  // 100 Hz
 constexpr double kMarkerSigmaM = 0.01;
 constexpr double kMarkerSigmaRad = 0.2 * std::numbers::pi / 180.0;
+
+// One IMU sample of a robot at rest (which propagates the filter and fuses what was queued), then the
+// marker poses captured at or after from_s among the fusions it reports, counted as fused or refused.
+void stepAtRest(TimeUs t_us, double from_s, Ekf* ekf, int* fused, int* refused) {
+  testing::feedRestingImu(t_us, ekf);
+  for (int i = 0; i < ekf->diagnostics().size(); ++i) {
+    const FusionDiagnostic& d = ekf->diagnostics().at(i);
+    if (d.source != kSrcMarkers || usToS(d.t_us) < from_s) continue;
+    ++*(d.reason == FusionReason::kFused ? fused : refused);
+  }
+  ekf->clearDiagnostics();
+}
 
 struct Outcome {
   int markers_fused_after_offset = 0;
@@ -64,16 +77,7 @@ Outcome run(TimeUs gate_reset_after_us, double offset_s, double offset_m, double
           Eigen::Vector3d::Constant(kMarkerSigmaRad * kMarkerSigmaRad);
       ekf.fusePose(p);
     }
-    ImuSample imu;
-    imu.t_us = t_us;
-    imu.f_imu_mps2 = Eigen::Vector3d(0.0, 0.0, 9.80665);
-    ekf.setImu(imu);
-    for (int i = 0; i < ekf.diagnostics().size(); ++i) {
-      const FusionDiagnostic& d = ekf.diagnostics().at(i);
-      if (d.source != kSrcMarkers || usToS(d.t_us) < offset_s) continue;
-      (d.reason == FusionReason::kFused ? out.markers_fused_after_offset : out.markers_refused_after_offset)++;
-    }
-    ekf.clearDiagnostics();
+    stepAtRest(t_us, offset_s, &ekf, &out.markers_fused_after_offset, &out.markers_refused_after_offset);
   }
   out.y_at_end_m = ekf.state().x.p_robot_in_odom_m.y();
   out.y_sigma_at_end_m = std::sqrt(ekf.state().P(es::kP + 1, es::kP + 1));
@@ -112,7 +116,7 @@ TEST(EkfMarkerLockout, ASingleOutlierIsRefusedWithoutAReset) {
   Ekf ekf;
   ASSERT_TRUE(ekf.init(config, nullptr));
   ASSERT_TRUE(ekf.reset(0, EkfInitialState{}));
-  int refused = 0;
+  int fused = 0, refused = 0;
   for (int k = 1; k <= 6000; ++k) {
     const TimeUs t_us = k * kImuPeriodUs;
     if (k % 10 == 0) {
@@ -126,15 +130,7 @@ TEST(EkfMarkerLockout, ASingleOutlierIsRefusedWithoutAReset) {
       p.cov_pose = Eigen::Matrix<double, 6, 6>::Identity() * 1e-4;
       ekf.fusePose(p);
     }
-    ImuSample imu;
-    imu.t_us = t_us;
-    imu.f_imu_mps2 = Eigen::Vector3d(0.0, 0.0, 9.80665);
-    ekf.setImu(imu);
-    for (int i = 0; i < ekf.diagnostics().size(); ++i) {
-      refused += ekf.diagnostics().at(i).source == kSrcMarkers &&
-                 ekf.diagnostics().at(i).reason != FusionReason::kFused;
-    }
-    ekf.clearDiagnostics();
+    stepAtRest(t_us, 0.0, &ekf, &fused, &refused);
   }
   // THEN each outlier is refused, nothing is reset and the estimate stays at the origin
   EXPECT_GE(refused, 19);
