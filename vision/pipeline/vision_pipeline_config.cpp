@@ -74,9 +74,9 @@ const std::array kVisionParams = {
       "stereo errors are correlated over a face: window overlap, support-point interpolation); 0: all cells",
       DEEPNAV_PARAM_FIELD(VisionPipelineConfig, planes.extraction.independent_points)},
     D{"planes_growing", ParamType::kEnum, "-", 0, 0, kPlaneGrowingMethods,
-      "plane extraction: pixels (region growing point by point, the reference) or tiles (planar tiles grown over "
-      "the tile graph, then the regions grown cell by cell from their whole tiles, after CAPE: about 2x fewer "
-      "instructions, not the same cells; vision/planes/README.md)",
+      "plane extraction: tiles (planar tiles grown over the tile graph, then the regions grown cell by cell from "
+      "their whole tiles, after CAPE: about 2x fewer instructions than pixels, not the same cells) or pixels "
+      "(region growing point by point, the reference); vision/planes/README.md",
       DEEPNAV_PARAM_ENUM_FIELD(VisionPipelineConfig, planes.extraction.growing)},
     D{"planes_tile_size_px", ParamType::kInt, "px", 4, 64, "",
       "plane extraction with planes_growing=tiles: side of a tile in image pixels",

@@ -2,10 +2,11 @@
 
 namespace deepnav {
 
-// How regions are grown (PlaneExtractor): kPixels, the Poppinga grower below, point by point
-// (PlaneRegionGrower, the default); kTiles, the cell-based grower of Proenca & Gao (CAPE, IROS
+// How regions are grown (PlaneExtractor): kTiles, the cell-based grower of Proenca & Gao (CAPE, IROS
 // 2018): planar tiles grown over the tile graph, then the regions grown cell by cell from their whole
-// tiles (PlaneTileGrower; it passes the pixel grower's tests, vision/planes/README.md).
+// tiles (PlaneTileGrower, the default: it passes the pixel grower's tests in half its instructions and
+// the dives navigate the same, vision/planes/README.md); kPixels, the Poppinga grower below, point by
+// point (PlaneRegionGrower, the reference).
 enum class PlaneGrowingMethod { kPixels = 0, kTiles = 1 };
 
 // Region growing after Poppinga, Vaskevicius, Birk & Pathak, "Fast plane detection and
@@ -53,7 +54,7 @@ struct PlaneExtractionConfig {
   // plane, beyond the expected stereo noise, is at most max_mse_m2. A planar tile joins a region
   // when its normal is within tile_max_normal_angle_deg of the region's, its centroid passes the
   // point test above and the region's MSE with it passes the region test above.
-  PlaneGrowingMethod growing = PlaneGrowingMethod::kPixels;
+  PlaneGrowingMethod growing = PlaneGrowingMethod::kTiles;
   int tile_size_px = 16;                   // 4..64
   double tile_min_valid_fraction = 0.5;    // (0, 1]
   double tile_max_normal_angle_deg = 20.0; // (0, 90]
