@@ -107,6 +107,36 @@ TEST(FastCornerMap, SameCornersAsOpenCvCellByCell) {
   EXPECT_GT(total, 10000);  // enough corners, and neighbours, for the non-maximum test to matter
 }
 
+// A row of cells computed in one go, each with its own floor (blocks across two cells take the lower
+// one), gives in every cell cv::FAST's corners at that cell's floor and above; cells of uneven widths,
+// narrower than a block, and floors that differ by a lot between neighbours.
+TEST(FastCornerMap, RowOfCellsGivesEachCellItsCorners) {
+  FastCornerMap map;
+  map.init(688, 516);
+  ASSERT_TRUE(map.exact());
+  const cv::Mat image = sceneImage(0.6);
+  const std::vector<int> x_edges = {19, 100, 181, 190, 203, 260, 341, 422, 503, 584, 668};
+  const std::vector<int> floors = {20, 5, 40, 9, 25, 12, 7, 30, 18, 11};
+  std::vector<cv::KeyPoint> got;
+  int total = 0;
+  for (int y0 : {19, 100, 416}) {
+    const int y1 = y0 + 81;
+    map.computeCells(image, y0, y1, x_edges.data(), floors.data(), static_cast<int>(floors.size()));
+    for (std::size_t c = 0; c < floors.size(); ++c) {
+      const cv::Rect cell(x_edges[c], y0, x_edges[c + 1] - x_edges[c], y1 - y0);
+      for (int t : {floors[c], floors[c] + 3, 40}) {
+        const std::vector<cv::KeyPoint> expected = openCvCorners(image, cell, t);
+        map.detect(cell, t, &got);
+        expectSameCorners(expected, got,
+                          "row " + std::to_string(y0) + " cell " + std::to_string(c) + " threshold " +
+                              std::to_string(t));
+        total += static_cast<int>(got.size());
+      }
+    }
+  }
+  EXPECT_GT(total, 2000);
+}
+
 // A cell touching the image's 3 px margin, a 1-pixel-wide cell and cells whose width is not a multiple
 // of 16 (the vector scan's tail), on noise where neighbours often tie.
 TEST(FastCornerMap, OddCellsAndTiesOnNoise) {

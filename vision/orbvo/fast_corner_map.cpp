@@ -85,8 +85,11 @@ void strength16(const std::array<const std::uint8_t*, kCircle>& circle, const st
 }
 #endif
 
-// s of row y's pixels x_begin <= x < x_end (at least kRadiusPx from the image's edges).
-void strengthRow(const cv::Mat& image, int y, int x_begin, int x_end, int floor, std::uint8_t* out) {
+// s of row y's pixels x_begin <= x < x_end (at least kRadiusPx from the image's edges) in blocks of 16 from
+// x_begin, the last one moved back to end at x_end (its recomputed pixels get the same values); block b
+// skips the pixels that cannot be corners above block_floor[b]. Fewer than 16 pixels: every strength, exactly.
+void strengthRow(const cv::Mat& image, int y, int x_begin, int x_end, const std::uint8_t* block_floor,
+                 std::uint8_t* out) {
   std::array<const std::uint8_t*, kCircle> circle{};
   for (int k = 0; k < kCircle; ++k) {
     circle[k] = image.ptr<std::uint8_t>(y + kCircleOffsets[k][1]) + kCircleOffsets[k][0];
@@ -94,16 +97,14 @@ void strengthRow(const cv::Mat& image, int y, int x_begin, int x_end, int floor,
   const std::uint8_t* centre = image.ptr<std::uint8_t>(y);
   int x = x_begin;
 #if CV_SIMD128
-  constexpr int kLanes = 16;
-  const V floor_v = cv::v_setall_u8(static_cast<std::uint8_t>(floor));
-  for (; x + kLanes <= x_end; x += kLanes) strength16(circle, centre, x, floor_v, out);
-  // the last partial block again from x_end - 16: recomputed pixels get the same values
-  if (x < x_end && x_end - kLanes >= x_begin) {
-    strength16(circle, centre, x_end - kLanes, floor_v, out);
-    x = x_end;
+  constexpr int kLanes = FastCornerMap::kBlockPx;
+  if (x_end - x_begin >= kLanes) {
+    for (int b = 0; x < x_end; ++b, x += kLanes) {
+      strength16(circle, centre, std::min(x, x_end - kLanes), cv::v_setall_u8(block_floor[b]), out);
+    }
   }
 #endif
-  (void)floor;  // the scalar tail computes every strength exactly
+  (void)block_floor;  // the scalar path computes every strength exactly
   for (; x < x_end; ++x) out[x] = strengthAt(circle, centre, x);
 }
 
@@ -137,20 +138,50 @@ void FastCornerMap::init(int max_width_px, int max_height_px) {
   constexpr int kCheckArea = 97 * 83;  // the size of the images reproducesOpenCv() uses
   const std::size_t area = static_cast<std::size_t>(std::max(max_width_px, 0)) * std::max(max_height_px, 0);
   buffer_.assign(std::max<std::size_t>(area, kCheckArea), 0);
+  block_floor_.assign(static_cast<std::size_t>(std::max(max_width_px, 97)) / kBlockPx + 1, 0);
   exact_ = reproducesOpenCv();
 }
 
-void FastCornerMap::compute(const cv::Mat& image, const cv::Rect& area, int floor_threshold) {
+bool FastCornerMap::prepare(const cv::Mat& image, int x_begin, int x_end, int y_begin, int y_end) {
   CV_Assert(image.type() == CV_8UC1 &&
             static_cast<std::size_t>(image.rows) * image.cols <= buffer_.size());
-  CV_Assert(area.x >= kRadiusPx && area.y >= kRadiusPx && area.x + area.width <= image.cols - kRadiusPx &&
-            area.y + area.height <= image.rows - kRadiusPx);
+  CV_Assert(x_begin >= kRadiusPx && y_begin >= kRadiusPx && x_end <= image.cols - kRadiusPx &&
+            y_end <= image.rows - kRadiusPx);
   if (strength_.data != buffer_.data() || strength_.size() != image.size()) {
     strength_ = cv::Mat(image.rows, image.cols, CV_8UC1, buffer_.data());
   }
-  for (int y = area.y; y < area.y + area.height; ++y) {
-    strengthRow(image, y, area.x, area.x + area.width, floor_threshold, strength_.ptr<std::uint8_t>(y));
+  return x_begin < x_end && y_begin < y_end;
+}
+
+void FastCornerMap::computeRows(const cv::Mat& image, int x_begin, int x_end, int y_begin, int y_end) {
+  for (int y = y_begin; y < y_end; ++y) {
+    strengthRow(image, y, x_begin, x_end, block_floor_.data(), strength_.ptr<std::uint8_t>(y));
   }
+}
+
+void FastCornerMap::compute(const cv::Mat& image, const cv::Rect& area, int floor_threshold) {
+  if (!prepare(image, area.x, area.x + area.width, area.y, area.y + area.height)) return;
+  const int blocks = (area.width + kBlockPx - 1) / kBlockPx;
+  std::fill(block_floor_.begin(), block_floor_.begin() + blocks, static_cast<std::uint8_t>(floor_threshold));
+  computeRows(image, area.x, area.x + area.width, area.y, area.y + area.height);
+}
+
+void FastCornerMap::computeCells(const cv::Mat& image, int y_begin, int y_end, const int* x_edges,
+                                 const int* floor_thresholds, int cells) {
+  const int x_begin = x_edges[0];
+  const int x_end = x_edges[cells];
+  if (!prepare(image, x_begin, x_end, y_begin, y_end)) return;
+  const int blocks = (x_end - x_begin + kBlockPx - 1) / kBlockPx;
+  int cell = 0;
+  for (int b = 0; b < blocks; ++b) {
+    const int block_begin = std::min(x_begin + b * kBlockPx, x_end - kBlockPx);
+    const int block_end = block_begin + kBlockPx;
+    while (x_edges[cell + 1] <= block_begin) ++cell;
+    int floor = floor_thresholds[cell];
+    for (int c = cell + 1; c < cells && x_edges[c] < block_end; ++c) floor = std::min(floor, floor_thresholds[c]);
+    block_floor_[b] = static_cast<std::uint8_t>(floor);
+  }
+  computeRows(image, x_begin, x_end, y_begin, y_end);
 }
 
 void FastCornerMap::detect(const cv::Rect& cell, int threshold,

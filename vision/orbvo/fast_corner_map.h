@@ -18,12 +18,13 @@ namespace deepnav {
 // same call. A neighbour q that is not a corner has s(q) <= t < s(p), so the test is s(p) > s(q) for
 // every 8-neighbour q inside the cell, and any value <= t for q changes nothing. Saturating u8
 // subtraction is monotone, so the brighter strength is (max over arcs of the arc's minimum - p)+ and
-// the darker one (p - min over arcs of the arc's maximum)+: 160 min/max per 16 pixels. init() checks the
+// the darker one (p - min over arcs of the arc's maximum)+: 110 min/max per 16 pixels. init() checks the
 // corners against cv::FAST on test images; when this OpenCV differs (another version, a HAL such as
 // Carotene on ARM), exact() is false and the caller keeps cv::FAST.
 class FastCornerMap {
  public:
   static constexpr int kRadiusPx = 3;  // of the Bresenham circle of 16 pixels
+  static constexpr int kBlockPx = 16;  // pixels per vector block
 
   // Sizes the map for images up to this size and checks the result against cv::FAST. Allocates.
   void init(int max_width_px, int max_height_px);
@@ -36,6 +37,14 @@ class FastCornerMap {
   // outside `area` keep what they had.
   void compute(const cv::Mat& image, const cv::Rect& area, int floor_threshold);
 
+  // compute() of a row of cells side by side, [x_edges[i], x_edges[i + 1]) x [y_begin, y_end) with
+  // floor_thresholds[i], i < cells (x_edges increasing): the blocks of 16 pixels run across the cells'
+  // edges, each skipping only what cannot be a corner above the lowest floor of the cells it touches, so
+  // detect() sees in each cell what compute() of that cell would give it, without a partly wasted block
+  // at the end of every cell and row.
+  void computeCells(const cv::Mat& image, int y_begin, int y_end, const int* x_edges,
+                    const int* floor_thresholds, int cells);
+
   // The corners of `cell` (inside the computed area) at `threshold` (floor_threshold..255), in raster order as cv::FAST gives them: pt in image pixels, response the
   // score s - 1, size 7. Clears `corners` first; allocates only past its capacity.
   void detect(const cv::Rect& cell, int threshold, std::vector<cv::KeyPoint>* corners) const;
@@ -44,11 +53,14 @@ class FastCornerMap {
   const cv::Mat& strength() const { return strength_; }
 
  private:
+  bool prepare(const cv::Mat& image, int x_begin, int x_end, int y_begin, int y_end);
+  void computeRows(const cv::Mat& image, int x_begin, int x_end, int y_begin, int y_end);
   bool reproducesOpenCv();
   bool sameCornersAsOpenCv(const cv::Mat& image, const cv::Rect& cell, int threshold,
                            std::vector<cv::KeyPoint>* scratch) const;
 
   std::vector<std::uint8_t> buffer_;
+  std::vector<std::uint8_t> block_floor_;  // floor of each 16-pixel block of the rows being computed
   cv::Mat strength_;  // CV_8UC1 header on buffer_, the size of the last image
   bool exact_ = false;
 };

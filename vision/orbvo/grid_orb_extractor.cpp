@@ -56,6 +56,8 @@ bool GridOrbExtractor::init(const OrbExtractorConfig& config, int width_px, int 
   }
   cell_threshold_.assign(
       static_cast<std::size_t>(config.n_levels) * config.grid_cols * config.grid_rows, 0);
+  x_edges_.assign(config.grid_cols + 1, 0);
+  first_threshold_.assign(config.grid_cols, 0);
   fast_corners_.reserve(static_cast<std::size_t>(width_px) * height_px / 16 + 64);
   cell_corners_.reserve(fast_corners_.capacity());
   return true;
@@ -91,14 +93,21 @@ void GridOrbExtractor::extractLevel(int level, std::vector<OrbFeature>* features
   const int usable_w = image.cols - 2 * border;
   const int usable_h = image.rows - 2 * border;
   const double scale = scales_[level];
+  for (int gx = 0; gx <= config_.grid_cols; ++gx) x_edges_[gx] = border + usable_w * gx / config_.grid_cols;
   for (int gy = 0; gy < config_.grid_rows; ++gy) {
     const int y0 = border + usable_h * gy / config_.grid_rows;
     const int y1 = border + usable_h * (gy + 1) / config_.grid_rows;
+    int* thresholds = &cell_threshold_[(level * config_.grid_rows + gy) * config_.grid_cols];
+    if (corner_map_fast_) {  // the row's first FAST pass in one go
+      for (int gx = 0; gx < config_.grid_cols; ++gx) {
+        const cv::Rect cell(x_edges_[gx], y0, x_edges_[gx + 1] - x_edges_[gx], y1 - y0);
+        first_threshold_[gx] = firstThreshold(image, cell, &thresholds[gx]);
+      }
+      corner_map_.computeCells(image, y0, y1, x_edges_.data(), first_threshold_.data(), config_.grid_cols);
+    }
     for (int gx = 0; gx < config_.grid_cols; ++gx) {
-      const int x0 = border + usable_w * gx / config_.grid_cols;
-      const int x1 = border + usable_w * (gx + 1) / config_.grid_cols;
-      int* threshold = &cell_threshold_[(level * config_.grid_rows + gy) * config_.grid_cols + gx];
-      detectCell(image, cv::Rect(x0, y0, x1 - x0, y1 - y0), cell_budget_[level], threshold);
+      const cv::Rect cell(x_edges_[gx], y0, x_edges_[gx + 1] - x_edges_[gx], y1 - y0);
+      detectCell(image, cell, cell_budget_[level], &thresholds[gx]);
       for (const cv::KeyPoint& kp : cell_corners_) {
         const int x = static_cast<int>(kp.pt.x);
         const int y = static_cast<int>(kp.pt.y);
@@ -117,25 +126,31 @@ void GridOrbExtractor::extractLevel(int level, std::vector<OrbFeature>* features
   }
 }
 
-// Leaves in cell_corners_ the `budget` strongest corners inside `cell` (level coordinates).
-void GridOrbExtractor::detectCell(const cv::Mat& image, const cv::Rect& cell, int budget,
-                                  int* cell_threshold) {
-  cell_corners_.clear();
-  // FAST cannot fire within 3 px of its image's edge: widen the ROI so the whole cell is searched.
-  constexpr int r = FastCornerMap::kRadiusPx;
-  const cv::Rect roi(cell.x - r, cell.y - r, cell.width + 2 * r, cell.height + 2 * r);
+// The cell's FAST threshold for its first pass: its own, set from its contrast on the first image.
+int GridOrbExtractor::firstThreshold(const cv::Mat& image, const cv::Rect& cell, int* cell_threshold) const {
   if (*cell_threshold == 0) {
     cv::Scalar mean, stddev;
     cv::meanStdDev(image(cell), mean, stddev);
     *cell_threshold =
         std::max(1, static_cast<int>(std::lround(config_.fast_contrast_gain * stddev[0])));
   }
-  int threshold =
-      std::clamp(*cell_threshold, config_.fast_threshold_min, config_.fast_threshold_max);
+  return std::clamp(*cell_threshold, config_.fast_threshold_min, config_.fast_threshold_max);
+}
+
+// Leaves in cell_corners_ the `budget` strongest corners inside `cell` (level coordinates). With the
+// corner map, the strengths of the first pass are already computed.
+void GridOrbExtractor::detectCell(const cv::Mat& image, const cv::Rect& cell, int budget,
+                                  int* cell_threshold) {
+  cell_corners_.clear();
+  // FAST cannot fire within 3 px of its image's edge: widen the ROI so the whole cell is searched.
+  constexpr int r = FastCornerMap::kRadiusPx;
+  const cv::Rect roi(cell.x - r, cell.y - r, cell.width + 2 * r, cell.height + 2 * r);
+  int threshold = firstThreshold(image, cell, cell_threshold);
   bool first_pass = true;
   for (;;) {
     if (corner_map_fast_) {
-      corner_map_.compute(image, cell, threshold);
+      // the first pass's strengths are the row's (extractLevel)
+      if (!first_pass) corner_map_.compute(image, cell, threshold);
       corner_map_.detect(cell, threshold, &cell_corners_);
     } else {
       cv::FAST(image(roi), fast_corners_, threshold, true, cv::FastFeatureDetector::TYPE_9_16);

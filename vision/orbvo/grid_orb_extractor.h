@@ -61,6 +61,7 @@ class GridOrbExtractor {
  private:
   void extractLevel(int level, std::vector<OrbFeature>* features,
                     std::vector<OrbDescriptor>* descriptors);
+  int firstThreshold(const cv::Mat& image, const cv::Rect& cell, int* cell_threshold) const;
   void detectCell(const cv::Mat& image, const cv::Rect& cell, int budget, int* threshold);
 
   OrbExtractorConfig config_{};
@@ -73,12 +74,14 @@ class GridOrbExtractor {
   std::vector<double> scales_;
   std::vector<int> cell_budget_;
   std::vector<int> cell_threshold_;         // per level and cell; 0 until the first image
+  std::vector<int> x_edges_;                // the grid's column edges on the current level
+  std::vector<int> first_threshold_;        // the first-pass thresholds of the current row of cells
   std::vector<cv::KeyPoint> fast_corners_;  // one FAST call
   std::vector<cv::KeyPoint> cell_corners_;  // the corners of one cell
   SteeredBrief brief_;
   FixedPointGaussian blur_;  // cv::GaussianBlur's result in about 60 % of its instructions
   bool exact_blur_ = false;  // blur_ reproduces cv::GaussianBlur for every level
-  FastCornerMap corner_map_;      // FAST strength of the current cell
+  FastCornerMap corner_map_;      // FAST strength of the current row of cells
   bool corner_map_fast_ = false;  // corner_map_ reproduces cv::FAST and the config asks for it
 };
 
