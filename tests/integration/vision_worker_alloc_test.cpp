@@ -247,8 +247,8 @@ TEST_F(VisionWorkerAlloc, DenseStereoPlanesAndMapAllocationsPerPair) {
   EXPECT_EQ(dense_allocations, 0);
 }
 
-// vision.planes_growing=tiles (PlaneTileGrower): on the same murky stage-2 clouds the plane VO finds planes
-// and registers about as often as with the pixel grower, and allocates nothing per pair either.
+// vision.planes_growing=tiles (PlaneTileGrower, the default): on the same murky stage-2 clouds the plane VO
+// finds planes and registers about as often as with the pixel grower, and allocates nothing per pair either.
 TEST_F(VisionWorkerAlloc, TileGrowingPlaneVoFindsPlanesWithoutAllocating) {
   ASSERT_NE(pairs_, nullptr);
   VisionPipelineConfig config = visionConfig(setup_);

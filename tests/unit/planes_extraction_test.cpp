@@ -46,7 +46,8 @@ struct Fixture {
   PlaneSet planes;
 };
 
-// Both growers: the pixel grower (the default) and the tile grower, which must pass the same test.
+// Both growers: the pixel grower (the reference) and the tile grower (the default), which must pass the
+// same test.
 class PlaneExtractionByGrower : public ::testing::TestWithParam<PlaneGrowingMethod> {};
 
 TEST_P(PlaneExtractionByGrower, FindsFloorAndBoxFacesWithNormalsOffsetsAndHole) {

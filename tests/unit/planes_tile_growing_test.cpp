@@ -1,4 +1,4 @@
-// PlaneGrowingMethod::kTiles (PlaneTileGrower) against the default pixel grower on the scene of
+// PlaneGrowingMethod::kTiles (PlaneTileGrower, the default) against the pixel grower on the scene of
 // planes_extraction_test, and on a step edge.
 #include <gtest/gtest.h>
 
