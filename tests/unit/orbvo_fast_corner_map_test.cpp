@@ -137,6 +137,17 @@ TEST(FastCornerMap, RowOfCellsGivesEachCellItsCorners) {
   EXPECT_GT(total, 2000);
 }
 
+// An image within the init area but wider than the init width needs more blocks per row than were sized:
+// refused with an error, not written past the buffer.
+TEST(FastCornerMap, WiderThanTheInitWidthIsRefused) {
+  FastCornerMap map;
+  map.init(64, 64);
+  cv::Mat wide(20, 400, CV_8UC1);
+  cv::RNG(5).fill(wide, cv::RNG::UNIFORM, 0, 256);
+  EXPECT_THROW(map.compute(wide, cv::Rect(3, 3, wide.cols - 6, wide.rows - 6), 5), cv::Exception);
+  EXPECT_NO_THROW(map.compute(wide, cv::Rect(3, 3, 90, wide.rows - 6), 5));
+}
+
 // A cell touching the image's 3 px margin, a 1-pixel-wide cell and cells whose width is not a multiple
 // of 16 (the vector scan's tail), on noise where neighbours often tie.
 TEST(FastCornerMap, OddCellsAndTiesOnNoise) {

@@ -10,6 +10,8 @@ namespace deepnav {
 namespace {
 
 constexpr int kCircle = 16;
+constexpr int kCheckWidthPx = 97;   // the size of the images reproducesOpenCv() uses
+constexpr int kCheckHeightPx = 83;
 
 // The Bresenham circle of radius 3 as (dx, dy), in order around it (OpenCV's order: any rotation or
 // direction of it gives the same arcs).
@@ -135,10 +137,10 @@ bool isCellMaximum(const cv::Mat& strength, const cv::Rect& cell, int x, int y) 
 }  // namespace
 
 void FastCornerMap::init(int max_width_px, int max_height_px) {
-  constexpr int kCheckArea = 97 * 83;  // the size of the images reproducesOpenCv() uses
+  constexpr int kCheckArea = kCheckWidthPx * kCheckHeightPx;
   const std::size_t area = static_cast<std::size_t>(std::max(max_width_px, 0)) * std::max(max_height_px, 0);
   buffer_.assign(std::max<std::size_t>(area, kCheckArea), 0);
-  block_floor_.assign(static_cast<std::size_t>(std::max(max_width_px, 97)) / kBlockPx + 1, 0);
+  block_floor_.assign(static_cast<std::size_t>(std::max(max_width_px, kCheckWidthPx)) / kBlockPx + 1, 0);
   exact_ = reproducesOpenCv();
 }
 
@@ -147,6 +149,8 @@ bool FastCornerMap::prepare(const cv::Mat& image, int x_begin, int x_end, int y_
             static_cast<std::size_t>(image.rows) * image.cols <= buffer_.size());
   CV_Assert(x_begin >= kRadiusPx && y_begin >= kRadiusPx && x_end <= image.cols - kRadiusPx &&
             y_end <= image.rows - kRadiusPx);
+  // an image as large as the init size but wider would need more blocks per row than init() sized
+  CV_Assert(static_cast<std::size_t>(x_end - x_begin + kBlockPx - 1) / kBlockPx <= block_floor_.size());
   if (strength_.data != buffer_.data() || strength_.size() != image.size()) {
     strength_ = cv::Mat(image.rows, image.cols, CV_8UC1, buffer_.data());
   }
@@ -248,7 +252,7 @@ bool FastCornerMap::sameCornersAsOpenCv(const cv::Mat& image, const cv::Rect& ce
 // The check images cut into cells of uneven sizes (one at the 3 px margin), computed at two floors and
 // detected at every threshold from the floor up, against cv::FAST on each widened cell.
 bool FastCornerMap::reproducesOpenCv() {
-  constexpr int kW = 97, kH = 83;
+  constexpr int kW = kCheckWidthPx, kH = kCheckHeightPx;
   const std::array<int, 5> thresholds = {1, 5, 9, 20, 40};
   const std::array<int, 4> xs = {kRadiusPx, 20, 51, kW - kRadiusPx};
   const std::array<int, 4> ys = {kRadiusPx, 31, 44, kH - kRadiusPx};

@@ -98,16 +98,16 @@ void GridOrbExtractor::extractLevel(int level, std::vector<OrbFeature>* features
     const int y0 = border + usable_h * gy / config_.grid_rows;
     const int y1 = border + usable_h * (gy + 1) / config_.grid_rows;
     int* thresholds = &cell_threshold_[(level * config_.grid_rows + gy) * config_.grid_cols];
+    for (int gx = 0; gx < config_.grid_cols; ++gx) {
+      const cv::Rect cell(x_edges_[gx], y0, x_edges_[gx + 1] - x_edges_[gx], y1 - y0);
+      first_threshold_[gx] = firstThreshold(image, cell, &thresholds[gx]);
+    }
     if (corner_map_fast_) {  // the row's first FAST pass in one go
-      for (int gx = 0; gx < config_.grid_cols; ++gx) {
-        const cv::Rect cell(x_edges_[gx], y0, x_edges_[gx + 1] - x_edges_[gx], y1 - y0);
-        first_threshold_[gx] = firstThreshold(image, cell, &thresholds[gx]);
-      }
       corner_map_.computeCells(image, y0, y1, x_edges_.data(), first_threshold_.data(), config_.grid_cols);
     }
     for (int gx = 0; gx < config_.grid_cols; ++gx) {
       const cv::Rect cell(x_edges_[gx], y0, x_edges_[gx + 1] - x_edges_[gx], y1 - y0);
-      detectCell(image, cell, cell_budget_[level], &thresholds[gx]);
+      detectCell(image, cell, cell_budget_[level], first_threshold_[gx], &thresholds[gx]);
       for (const cv::KeyPoint& kp : cell_corners_) {
         const int x = static_cast<int>(kp.pt.x);
         const int y = static_cast<int>(kp.pt.y);
@@ -137,19 +137,19 @@ int GridOrbExtractor::firstThreshold(const cv::Mat& image, const cv::Rect& cell,
   return std::clamp(*cell_threshold, config_.fast_threshold_min, config_.fast_threshold_max);
 }
 
-// Leaves in cell_corners_ the `budget` strongest corners inside `cell` (level coordinates). With the
-// corner map, the strengths of the first pass are already computed.
-void GridOrbExtractor::detectCell(const cv::Mat& image, const cv::Rect& cell, int budget,
+// Leaves in cell_corners_ the `budget` strongest corners inside `cell` (level coordinates), searched
+// first at `first_threshold` (firstThreshold()); with the corner map, the strengths of that pass are
+// already computed (extractLevel).
+void GridOrbExtractor::detectCell(const cv::Mat& image, const cv::Rect& cell, int budget, int first_threshold,
                                   int* cell_threshold) {
   cell_corners_.clear();
   // FAST cannot fire within 3 px of its image's edge: widen the ROI so the whole cell is searched.
   constexpr int r = FastCornerMap::kRadiusPx;
   const cv::Rect roi(cell.x - r, cell.y - r, cell.width + 2 * r, cell.height + 2 * r);
-  int threshold = firstThreshold(image, cell, cell_threshold);
+  int threshold = first_threshold;
   bool first_pass = true;
   for (;;) {
     if (corner_map_fast_) {
-      // the first pass's strengths are the row's (extractLevel)
       if (!first_pass) corner_map_.compute(image, cell, threshold);
       corner_map_.detect(cell, threshold, &cell_corners_);
     } else {

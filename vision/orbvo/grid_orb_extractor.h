@@ -62,7 +62,8 @@ class GridOrbExtractor {
   void extractLevel(int level, std::vector<OrbFeature>* features,
                     std::vector<OrbDescriptor>* descriptors);
   int firstThreshold(const cv::Mat& image, const cv::Rect& cell, int* cell_threshold) const;
-  void detectCell(const cv::Mat& image, const cv::Rect& cell, int budget, int* threshold);
+  void detectCell(const cv::Mat& image, const cv::Rect& cell, int budget, int first_threshold,
+                  int* cell_threshold);
 
   OrbExtractorConfig config_{};
   int width_px_ = 0;
