@@ -1,5 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <random>
+#include <vector>
+
 #include "vision/stereo/disparity_edge_refiner.h"
 #include "vision/stereo/disparity_estimator.h"
 #include "vision/stereo/disparity_gap_fill.h"
@@ -33,6 +37,68 @@ TEST(DisparitySpeckle, RemovesSmallSegmentsOnly) {
   EXPECT_LT(d.at<float>(3, 3), 0.0f);
   EXPECT_FLOAT_EQ(d.at<float>(12, 12), 20.0f);
   EXPECT_FLOAT_EQ(d.at<float>(0, 0), 10.0f);
+}
+
+// The definition, written as a plain flood fill: 4-connected segments of valid pixels whose
+// neighbours differ by at most sim_px; those under min_size_px pixels become invalid.
+cv::Mat floodFillSpeckles(const cv::Mat& in, int min_size_px, float sim_px) {
+  cv::Mat out = in.clone();
+  cv::Mat seen(in.size(), CV_8U, cv::Scalar(0));
+  const int du[4] = {-1, 1, 0, 0};
+  const int dv[4] = {0, 0, -1, 1};
+  for (int v0 = 0; v0 < in.rows; ++v0) {
+    for (int u0 = 0; u0 < in.cols; ++u0) {
+      if (seen.at<std::uint8_t>(v0, u0) || in.at<float>(v0, u0) < 0.0f) continue;
+      std::vector<cv::Point> segment{{u0, v0}};
+      seen.at<std::uint8_t>(v0, u0) = 1;
+      for (std::size_t k = 0; k < segment.size(); ++k) {
+        const cv::Point p = segment[k];
+        for (int n = 0; n < 4; ++n) {
+          const cv::Point q(p.x + du[n], p.y + dv[n]);
+          if (q.x < 0 || q.y < 0 || q.x >= in.cols || q.y >= in.rows) continue;
+          const float dq = in.at<float>(q), dp = in.at<float>(p);
+          if (seen.at<std::uint8_t>(q) || dq < 0.0f || std::fabs(dq - dp) > sim_px) continue;
+          seen.at<std::uint8_t>(q) = 1;
+          segment.push_back(q);
+        }
+      }
+      if (static_cast<int>(segment.size()) >= min_size_px) continue;
+      for (const cv::Point& p : segment) out.at<float>(p) = kInvalidDisparity;
+    }
+  }
+  return out;
+}
+
+TEST(DisparitySpeckle, RemovesWhatAFloodFillRemovesOnNoisyMaps) {
+  // GIVEN noisy maps: few disparity levels, so that segments meander, merge below U shapes and
+  // enclose one another, with holes of invalid pixels
+  std::mt19937 rng(7);
+  int removed = 0, kept = 0;
+  for (const float invalid_share : {0.0f, 0.2f, 0.5f}) {
+    for (const int levels : {3, 6, 20}) {
+      cv::Mat d(57, 83, CV_32F);
+      std::uniform_int_distribution<int> level(0, levels - 1);
+      std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+      for (int v = 0; v < d.rows; ++v) {
+        for (int u = 0; u < d.cols; ++u) {
+          d.at<float>(v, u) = unit(rng) < invalid_share ? kInvalidDisparity : 2.0f * level(rng);
+        }
+      }
+      const cv::Mat input = d.clone();
+      // WHEN filtered
+      const cv::Mat expected = floodFillSpeckles(d, 12, 2.0f);
+      DisparitySpeckleFilter filter;
+      ASSERT_TRUE(filter.allocate(d.cols, d.rows));
+      filter.apply(12, 2.0f, &d);
+      // THEN the same pixels remain, with the same values
+      EXPECT_EQ(cv::norm(d, expected, cv::NORM_INF), 0.0) << invalid_share << " " << levels;
+      removed += cv::countNonZero((expected < 0.0f) & (input >= 0.0f));
+      kept += cv::countNonZero(expected >= 0.0f);
+    }
+  }
+  // AND the maps had both kinds of segments
+  EXPECT_GT(removed, 1000);
+  EXPECT_GT(kept, 1000);
 }
 
 TEST(DisparityGapFill, InterpolatesOneSurfaceAndTakesBackgroundBetweenTwo) {
