@@ -39,6 +39,8 @@ class ElasDenseMatcher {
   template <bool kViewRight>
   float matchPixel(const std::uint8_t* ref_row, const std::uint8_t* other_row, int width, float mu,
                    const std::uint64_t* cell, int words, int u, float* subpixel) const;
+  // subpixel[u] of the row from the parabola costs matchPixel() left (0 where disparity[u] < 0)
+  void subpixelRow(const float* disparity, int width, float* subpixel) const;
   int priorBonus(int d, float mu) const;
   int bonusIndex(int d, float mu) const;
 
@@ -50,6 +52,8 @@ class ElasDenseMatcher {
   std::vector<int> band_lo_;      // per pixel of the row being matched
   std::vector<int> band_hi_;      // < band_lo_ when the pixel has no prior (mu < 0)
   std::vector<int> bonus_index_;  // [k * width + u]: prior_bonus_ index of d = band_lo_[u] + k
+  // per pixel of the row: the costs at best d - 1, d, d + 1 (all three the best cost at the range's ends)
+  mutable std::vector<int> parabola_minus_, parabola_centre_, parabola_plus_;
 };
 
 }  // namespace deepnav
