@@ -42,7 +42,8 @@ std::int32_t DisparitySpeckleFilter::labelRow(const float* d, int v, float sim_p
   float left = kInvalidDisparity;
   for (int u = 0; u < width; ++u) {
     const float x = d[u];
-    const std::int32_t valid = x >= 0.0f;
+    // not below 0: a NaN is a pixel of its own (never joined), so a segment of one, as the flood fill had it
+    const std::int32_t valid = !(x < 0.0f);
     const std::int32_t goes_on = joins(x, left, sim_px);  // implies valid
     run += valid & (goes_on ^ 1);
     length = (length & -goes_on) + valid;
