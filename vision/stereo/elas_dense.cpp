@@ -150,7 +150,7 @@ void ElasDenseMatcher::match(const ElasDescriptorImage& ref, const ElasDescripto
 template <bool kViewRight>
 [[gnu::always_inline]] inline float ElasDenseMatcher::matchPixel(const std::uint8_t* ref_row, const std::uint8_t* other_row, int width,
                                           float mu, const std::uint64_t* cell, int words, int u,
-                                          float* subpixel) const {
+                                          float* subpixel) {
   constexpr std::ptrdiff_t kBytes = ElasDescriptorImage::kBytes;
   constexpr std::ptrdiff_t kDir = kViewRight ? kBytes : -kBytes;  // other pixel = u + (+-) d
   constexpr int kSupportClass = 256;
@@ -229,7 +229,8 @@ void ElasDenseMatcher::subpixelRow(const float* disparity, int width, float* sub
     const cv::v_int32x4 curvature = m - (c + c) + p;
     const cv::v_float32x4 offset = half * cv::v_cvt_f32(m - p) / cv::v_cvt_f32(curvature);
     const cv::v_float32x4 clamped = cv::v_min(cv::v_max(offset, neg_half), half);
-    const cv::v_int32x4 use = (curvature > zero) & cv::v_reinterpret_as_s32(cv::v_load(disparity + u) >= cv::v_setzero_f32());
+    const cv::v_int32x4 matched = cv::v_reinterpret_as_s32(cv::v_load(disparity + u) >= cv::v_setzero_f32());
+    const cv::v_int32x4 use = (curvature > zero) & matched;
     cv::v_store(subpixel + u, cv::v_select(cv::v_reinterpret_as_f32(use), clamped, cv::v_setzero_f32()));
   }
 #endif
@@ -245,7 +246,7 @@ void ElasDenseMatcher::subpixelRow(const float* disparity, int width, float* sub
 template <bool kViewRight>
 void ElasDenseMatcher::matchRow(const ElasDescriptorImage& ref, const ElasDescriptorImage& other,
                                 const cv::Mat& mean_px, const ElasCandidates& candidates, int v, float* out,
-                                float* subpixel) const {
+                                float* subpixel) {
   const int width = ref.width();
   const int grid = candidates.gridSize();
   const int words = candidates.words();

@@ -34,11 +34,12 @@ class ElasDenseMatcher {
   void prepareRange(const float* mean_row, bool view_right, int width, int u_begin, int u_end);
   template <bool kViewRight>
   void matchRow(const ElasDescriptorImage& ref, const ElasDescriptorImage& other, const cv::Mat& mean_px,
-                const ElasCandidates& candidates, int v, float* out, float* subpixel) const;
-  // The disparity of ref pixel u (-1 when none) and, when subpixel is not null, subpixel[u].
+                const ElasCandidates& candidates, int v, float* out, float* subpixel);
+  // The disparity of ref pixel u (-1 when none) and, when subpixel is not null, the costs at its
+  // d - 1, d, d + 1 for subpixelRow() (subpixel itself is not written here).
   template <bool kViewRight>
   float matchPixel(const std::uint8_t* ref_row, const std::uint8_t* other_row, int width, float mu,
-                   const std::uint64_t* cell, int words, int u, float* subpixel) const;
+                   const std::uint64_t* cell, int words, int u, float* subpixel);
   // subpixel[u] of the row from the parabola costs matchPixel() left (0 where disparity[u] < 0)
   void subpixelRow(const float* disparity, int width, float* subpixel) const;
   int priorBonus(int d, float mu) const;
@@ -53,7 +54,7 @@ class ElasDenseMatcher {
   std::vector<int> band_hi_;      // < band_lo_ when the pixel has no prior (mu < 0)
   std::vector<int> bonus_index_;  // [k * width + u]: prior_bonus_ index of d = band_lo_[u] + k
   // per pixel of the row: the costs at best d - 1, d, d + 1 (all three the best cost at the range's ends)
-  mutable std::vector<int> parabola_minus_, parabola_centre_, parabola_plus_;
+  std::vector<int> parabola_minus_, parabola_centre_, parabola_plus_;
 };
 
 }  // namespace deepnav
